@@ -1,0 +1,64 @@
+// amls vortex / amls enright: the paper's accuracy tests.
+#include <iostream>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/flow_report.hpp"
+#include "app/terminal_progress.hpp"
+#include "core/flow_test.hpp"
+
+namespace amls::app {
+
+namespace {
+
+struct FlowTestOptions {
+  FlowTestConfig config;
+  std::string variant = "exact";
+  std::string json_path;
+};
+
+using Runner = FlowTestReport (*)(const FlowTestConfig&, const FlowProgress&);
+
+void add_flow_test_command(CLI::App& app, const std::string& name, const std::string& description, int default_grid,
+                           Runner runner) {
+  auto options = std::make_shared<FlowTestOptions>();
+  options->config.grid = default_grid;
+  CLI::App* cmd = app.add_subcommand(name, description);
+  cmd->add_option("--grid", options->config.grid, "cells per unit length: h = 1/N")->capture_default_str();
+  cmd->add_option("--variant", options->variant, "resampler: exact or interpolated")
+      ->check(CLI::IsMember({"exact", "interpolated"}))
+      ->capture_default_str();
+  cmd->add_option("--radius-factor", options->config.radius_factor, "influence radius Delta in units of h")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--dt", options->config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--substeps", options->config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--threads", options->config.threads, "worker threads (results do not depend on it)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--json", options->json_path, "write the JSON report to this file");
+  cmd->callback([options, runner] {
+    options->config.variant = parse_variant(options->variant);
+    TerminalProgress progress;
+    const FlowTestReport report = runner(options->config, [&](std::size_t k, std::size_t n, double t, std::size_t p) {
+      progress.update(k, n, t, p);
+    });
+    print_table(std::cout, report);
+    if (!options->json_path.empty()) write_json_file(options->json_path, to_json(report));
+  });
+}
+
+}  // namespace
+
+void add_flow_test_commands(CLI::App& app) {
+  add_flow_test_command(app, "vortex",
+                        "single-vortex test (2D): a circle r = 0.15 at (0.5, 0.75) deformed from t = 0 to 8 and "
+                        "back, resampled every dt; prints time per phase and the L1 error",
+                        256, &run_vortex_test);
+  add_flow_test_command(app, "enright",
+                        "Enright test (3D): a sphere r = 0.15 at (0.35, 0.35, 0.35) deformed from t = 0 to 3 and "
+                        "back, resampled every dt; prints time per phase and the volume loss",
+                        128, &run_enright_test);
+}
+
+}  // namespace amls::app

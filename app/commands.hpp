@@ -1,0 +1,9 @@
+#pragma once
+// Each command registers its subcommand and options on the CLI.
+#include <CLI/CLI.hpp>
+
+namespace amls::app {
+
+void add_flow_test_commands(CLI::App& app);
+
+}  // namespace amls::app

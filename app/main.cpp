@@ -1,0 +1,24 @@
+// amls: the command line of the AMLS deforming-surface toolkit.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "amls - deforming point-set (AMLS) surfaces with grid-based resampling\n"
+      "(Resampling Strategies for Deforming MLS Surfaces). Run 'amls <command> --help' for a command's options."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "amls 0.1.0");
+  amls::app::add_flow_test_commands(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "amls: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

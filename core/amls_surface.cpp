@@ -1,0 +1,106 @@
+#include "core/amls_surface.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "core/weight.hpp"
+
+namespace amls {
+
+template <int D>
+AmlsSurface<D>::AmlsSurface(const Grid<D>& grid, const AmlsParameters& parameters)
+    : grid_(grid), parameters_(parameters), radius_(parameters.radius_factor * grid.spacing()) {
+  if (!(parameters.radius_factor > 0.0) || !std::isfinite(parameters.radius_factor))
+    throw std::invalid_argument("radius factor must be positive, got " + std::to_string(parameters.radius_factor));
+  if (!(parameters.min_weight >= 0.0))
+    throw std::invalid_argument("minimum weight must be non-negative, got " + std::to_string(parameters.min_weight));
+}
+
+template <int D>
+void AmlsSurface<D>::set_points(PointSet<D> points) {
+  if (points.normals.size() != points.positions.size())
+    throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
+                                std::to_string(points.normals.size()) + " normals");
+  points_ = std::move(points);
+  hashed_ = ready_ = false;
+}
+
+template <int D>
+void AmlsSurface<D>::hash_points() {
+  index_.build(points_.positions, grid_.origin(), radius_);
+  hashed_ = true;
+  ready_ = false;
+}
+
+template <int D>
+NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
+  if (!hashed_) hash_points();
+  const std::size_t n = points_.size();
+  pseudo_normals_.resize(n);
+  std::vector<FitStatus> status(n);
+  const double inverse_radius = 1.0 / radius_;
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec<D>& p = points_.positions[i];
+      PrattFit<D> fit;
+      index_.for_each_within(p, radius_, [&](std::uint32_t, const Vec<D>& q) {
+        const Vec<D> u = (q - p) * inverse_radius;
+        fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
+      });
+      pseudo_normals_[i] = points_.normals[i];
+      status[i] = fit.solve(points_.normals[i], pseudo_normals_[i]);
+    }
+  });
+  NormalStats stats;
+  for (FitStatus s : status) {
+    switch (s) {
+      case FitStatus::ok: ++stats.ok; break;
+      case FitStatus::too_few_neighbours: ++stats.too_few_neighbours; break;
+      case FitStatus::degenerate: ++stats.degenerate; break;
+      case FitStatus::no_solution: ++stats.no_solution; break;
+    }
+  }
+  ready_ = true;
+  return stats;
+}
+
+template <int D>
+void AmlsSurface<D>::require_ready() const {
+  if (!ready_) throw std::logic_error("AmlsSurface evaluated before hash_points() and update_normals()");
+}
+
+template <int D>
+Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
+  require_ready();
+  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  GradientFit<D> fit;
+  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
+    const Vec<D> d = q - x;
+    fit.add(d, pseudo_normals_[id], weight_of_squared_ratio(d.squaredNorm() * inverse_r2));
+  });
+  return fit.solve(parameters_.min_weight);
+}
+
+template <int D>
+Evaluation<D> AmlsSurface<D>::evaluate_among(const Vec<D>& x, std::span<const std::uint32_t> candidates) const {
+  require_ready();
+  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  GradientFit<D> fit;
+  for (std::uint32_t id : candidates) {
+    const Vec<D> d = points_.positions[id] - x;
+    const double w = weight_of_squared_ratio(d.squaredNorm() * inverse_r2);
+    if (w > 0.0) fit.add(d, pseudo_normals_[id], w);
+  }
+  return fit.solve(parameters_.min_weight);
+}
+
+template <int D>
+void AmlsSurface<D>::gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
+  if (!hashed_) throw std::logic_error("AmlsSurface queried before hash_points()");
+  index_.gather(x, radius, out);
+}
+
+template class AmlsSurface<2>;
+template class AmlsSurface<3>;
+
+}  // namespace amls

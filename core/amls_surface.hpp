@@ -1,0 +1,85 @@
+#pragma once
+// The AMLS surface S(P) of a point set (paper, section 2): the points, their
+// neighbour index, their pseudo-normals (Step 1) and F with its fit gradient
+// (Step 2) at any position.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/gradient_fit.hpp"
+#include "core/grid.hpp"
+#include "core/point_index.hpp"
+#include "core/point_set.hpp"
+#include "core/pratt_fit.hpp"
+#include "core/thread_pool.hpp"
+
+namespace amls {
+
+struct AmlsParameters {
+  // Delta = radius_factor * h (paper: Delta < d h with d = 3).
+  double radius_factor = 3.0;
+  // F is undefined at x where the weights reaching x sum to less than this,
+  // i.e. less than one point at 0.575 Delta would give. Without it, fits at the
+  // rim of the support extrapolate from one or two far points and put spurious
+  // zero crossings there (tests/test_amls_surface.cpp shows one).
+  double min_weight = 0.2;
+};
+
+struct NormalStats {
+  std::size_t ok = 0;
+  std::size_t too_few_neighbours = 0;
+  std::size_t degenerate = 0;
+  std::size_t no_solution = 0;
+  std::size_t failed() const { return too_few_neighbours + degenerate + no_solution; }
+};
+
+template <int D>
+class AmlsSurface {
+ public:
+  AmlsSurface(const Grid<D>& grid, const AmlsParameters& parameters);
+
+  const Grid<D>& grid() const { return grid_; }
+  const AmlsParameters& parameters() const { return parameters_; }
+  double radius() const { return radius_; }
+
+  const PointSet<D>& points() const { return points_; }
+  // Moving the points invalidates the index and the pseudo-normals until the
+  // next hash_points() and update_normals().
+  PointSet<D>& mutable_points() {
+    ready_ = false;
+    return points_;
+  }
+  void set_points(PointSet<D> points);
+
+  // Hash(): rebuilds the neighbour index.
+  void hash_points();
+  // Update_Normals(): the pseudo-normal of every point by the Pratt fit, oriented
+  // to agree with the normal it carries; where the fit fails, the carried normal.
+  NormalStats update_normals(ThreadPool& pool);
+  const std::vector<Vec<D>>& pseudo_normals() const { return pseudo_normals_; }
+
+  // F(x) and the fit's gradient, over all points within Delta of x.
+  Evaluation<D> evaluate(const Vec<D>& x) const;
+  // The same over `candidates` only; they must include every point within
+  // Delta of x (e.g. all points within Delta + h/2 of an edge's midpoint).
+  Evaluation<D> evaluate_among(const Vec<D>& x, std::span<const std::uint32_t> candidates) const;
+  // Appends the ids of the points within `radius` of x.
+  void gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const;
+
+ private:
+  void require_ready() const;
+
+  Grid<D> grid_;
+  AmlsParameters parameters_;
+  double radius_;
+  PointSet<D> points_;
+  PointIndex<D> index_;
+  std::vector<Vec<D>> pseudo_normals_;
+  bool hashed_ = false;
+  bool ready_ = false;
+};
+
+extern template class AmlsSurface<2>;
+extern template class AmlsSurface<3>;
+
+}  // namespace amls

@@ -1,0 +1,116 @@
+#include "core/flow_test.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/flow_deformation.hpp"
+#include "core/process_memory.hpp"
+#include "core/shapes.hpp"
+
+namespace amls {
+
+namespace {
+
+// A run is broken when its point set vanishes or grows past this many times its start.
+constexpr double kMaxGrowth = 20.0;
+
+void validate(const FlowTestConfig& c) {
+  if (c.grid < 8) throw std::invalid_argument("--grid must be at least 8, got " + std::to_string(c.grid));
+  if (!(c.dt > 0.0)) throw std::invalid_argument("--dt must be positive");
+  if (c.threads < 1) throw std::invalid_argument("--threads must be at least 1");
+}
+
+// Runs the loop from t = 0 to `period`, starting from one resampling of the
+// exact shape, and leaves the final points' pseudo-normals computed.
+template <int D>
+void run_flow(DeformingSurface<D>& surface, std::shared_ptr<const VelocityField<D>> field, double period, const FlowTestConfig& config,
+              const FlowProgress& progress, FlowTestReport& report) {
+  const FlowDeformation<D> flow(std::move(field), config.substeps);
+  surface.resample_only();
+  report.points_initial = report.points_max = surface.points().size();
+  report.steps_planned = static_cast<std::size_t>(std::llround(period / config.dt));
+  for (std::size_t k = 0; k < report.steps_planned; ++k) {
+    const double t0 = period * static_cast<double>(k) / static_cast<double>(report.steps_planned);
+    const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
+    const StepStats stats = surface.step(flow, t0, t1);
+    report.timings += stats.timings;
+    report.steps = k + 1;
+    const std::size_t n = surface.points().size();
+    report.points_max = std::max(report.points_max, n);
+    if (progress) progress(k + 1, report.steps_planned, t1, n);
+    if (n == 0) {
+      report.broken = true;
+      report.status_reason = "the point set vanished at step " + std::to_string(k + 1);
+      break;
+    }
+    if (static_cast<double>(n) > kMaxGrowth * static_cast<double>(report.points_initial)) {
+      report.broken = true;
+      report.status_reason = "the point set grew past 20x its start at step " + std::to_string(k + 1);
+      break;
+    }
+  }
+  report.points_final = surface.points().size();
+  if (!surface.points().empty()) {
+    surface.refresh_normals();
+    report.spacing_h = spacing_stats(surface.points(), surface.surface().grid().spacing());
+  }
+}
+
+void finish(FlowTestReport& report, const RayScan& scan) {
+  if (!report.broken && !scan.closed) {
+    report.broken = true;
+    report.status_reason = (report.dimension == 2 ? "the final curve is not one closed curve: "
+                                                   : "the final surface is not closed: ") +
+                           scan.reason;
+  }
+  report.peak_memory_mib = peak_memory_mib();
+}
+
+}  // namespace
+
+FlowTestReport run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress) {
+  validate(config);
+  FlowTestReport report;
+  report.test = "vortex";
+  report.dimension = 2;
+  report.config = config;
+  const Vec<2> center(0.5, 0.75);
+  const double radius = 0.15;
+  const Grid<2> grid = Grid<2>::unit(config.grid);
+  const AmlsParameters parameters{config.radius_factor};
+  DeformingSurface<2> surface(grid, parameters, config.variant, config.threads);
+  const auto count = static_cast<std::size_t>(std::ceil(2.0 * std::numbers::pi * radius / (0.5 * grid.spacing())));
+  surface.set_points(sample_circle(center, radius, count));
+  run_flow<2>(surface, std::make_shared<SingleVortex>(8.0), 8.0, config, progress, report);
+  const CircleError error = circle_l1_error(surface.surface(), center, radius);
+  report.l1_error = error.l1;
+  finish(report, error.scan);
+  return report;
+}
+
+FlowTestReport run_enright_test(const FlowTestConfig& config, const FlowProgress& progress) {
+  validate(config);
+  FlowTestReport report;
+  report.test = "enright";
+  report.dimension = 3;
+  report.config = config;
+  const Vec<3> center(0.35, 0.35, 0.35);
+  const double radius = 0.15;
+  const Grid<3> grid = Grid<3>::unit(config.grid);
+  const AmlsParameters parameters{config.radius_factor};
+  DeformingSurface<3> surface(grid, parameters, config.variant, config.threads);
+  const double area = 4.0 * std::numbers::pi * radius * radius;
+  const auto count = static_cast<std::size_t>(std::ceil(area / std::pow(0.5 * grid.spacing(), 2)));
+  surface.set_points(sample_sphere(center, radius, count));
+  run_flow<3>(surface, std::make_shared<EnrightField>(3.0), 3.0, config, progress, report);
+  const SphereError error = sphere_volume_error(surface.surface(), center, radius);
+  report.volume_loss = (error.exact_volume - error.volume) / error.exact_volume;
+  report.symmetric_difference = error.symmetric_difference;
+  report.relative_symmetric_difference = error.symmetric_difference / error.exact_volume;
+  finish(report, error.scan);
+  return report;
+}
+
+}  // namespace amls

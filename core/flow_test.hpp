@@ -1,0 +1,51 @@
+#pragma once
+// The accuracy tests of the paper's section 5: a shape carried by a velocity
+// field that brings it back to where it started, resampled every dt, and
+// compared with its initial self at the end. 2D: the single vortex (circle
+// r = 0.15 at (0.5, 0.75), t in [0, 8]). 3D: Enright's field (sphere r = 0.15 at
+// (0.35, 0.35, 0.35), t in [0, 3]).
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "core/deforming_surface.hpp"
+#include "core/metrics.hpp"
+
+namespace amls {
+
+struct FlowTestConfig {
+  int grid = 256;  // cells per unit length: h = 1 / grid
+  Variant variant = Variant::exact;
+  double radius_factor = 3.0;
+  double dt = 0.01;
+  int substeps = 1;
+  int threads = 1;
+};
+
+struct FlowTestReport {
+  std::string test;  // "vortex" or "enright"
+  int dimension = 2;
+  FlowTestConfig config;
+  std::size_t steps = 0;  // steps done (fewer than planned if the run broke)
+  std::size_t steps_planned = 0;
+  bool broken = false;
+  std::string status_reason;
+  std::size_t points_initial = 0;
+  std::size_t points_max = 0;
+  std::size_t points_final = 0;
+  SpacingStats spacing_h;  // of the final point set
+  PhaseTimings timings;
+  double peak_memory_mib = 0.0;
+  double l1_error = 0.0;              // 2D
+  double volume_loss = 0.0;           // 3D: (V0 - V) / V0
+  double symmetric_difference = 0.0;  // 3D, absolute volume
+  double relative_symmetric_difference = 0.0;  // 3D, divided by V0
+};
+
+// Called after every step with (steps done, steps planned, time, points).
+using FlowProgress = std::function<void(std::size_t, std::size_t, double, std::size_t)>;
+
+FlowTestReport run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress = {});
+FlowTestReport run_enright_test(const FlowTestConfig& config, const FlowProgress& progress = {});
+
+}  // namespace amls

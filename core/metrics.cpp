@@ -1,0 +1,146 @@
+#include "core/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "core/root_finding.hpp"
+
+namespace amls {
+
+template <int D>
+SpacingStats spacing_stats(const PointSet<D>& points, double h) {
+  SpacingStats s;
+  if (points.size() < 2) return s;
+  PointIndex<D> index;
+  index.build(points.positions, Vec<D>::Zero(), 2.0 * h);
+  std::vector<double> nearest(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec<D>& p = points.positions[i];
+    double best2 = std::numeric_limits<double>::infinity();
+    auto consider = [&](std::uint32_t id, const Vec<D>& q) {
+      if (id != i) best2 = std::min(best2, (q - p).squaredNorm());
+    };
+    for (double radius = 2.0 * h; !std::isfinite(best2); radius *= 4.0) index.for_each_within(p, radius, consider);
+    nearest[i] = std::sqrt(best2) / h;
+  }
+  std::sort(nearest.begin(), nearest.end());
+  s.min = nearest.front();
+  s.max = nearest.back();
+  s.median = nearest[nearest.size() / 2];
+  return s;
+}
+
+template SpacingStats spacing_stats<2>(const PointSet<2>&, double);
+template SpacingStats spacing_stats<3>(const PointSet<3>&, double);
+
+namespace {
+
+// The radii at which F changes sign along the ray centre + r u, r in [r_lo, r_hi],
+// sampled every `step` and refined by the bracketed root finder.
+template <int D>
+std::vector<double> crossings_along_ray(const AmlsSurface<D>& surface, const Vec<D>& center, const Vec<D>& u,
+                                        double r_lo, double r_hi, double step) {
+  std::vector<double> roots;
+  auto value_at = [&](double r) -> std::optional<double> {
+    const Evaluation<D> e = surface.evaluate(center + r * u);
+    if (!e.defined) return std::nullopt;
+    return e.value;
+  };
+  std::optional<double> previous;
+  double previous_r = r_lo;
+  for (double r = r_lo; r <= r_hi + 0.5 * step; r += step) {
+    const std::optional<double> f = value_at(r);
+    if (f && previous && ((*f >= 0.0) != (*previous >= 0.0))) {
+      const RootResult root = find_root_illinois(value_at, previous_r, r, *previous, *f, 1e-12 * step);
+      roots.push_back(root.ok ? root.t : previous_r + (r - previous_r) * *previous / (*previous - *f));
+    }
+    previous = f;
+    previous_r = r;
+  }
+  return roots;
+}
+
+// The range of distances from `center` that the zero set can reach: F is
+// undefined farther than Delta from every point.
+template <int D>
+std::pair<double, double> radial_range(const AmlsSurface<D>& surface, const Vec<D>& center) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const Vec<D>& p : surface.points().positions) {
+    const double r = (p - center).norm();
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+  }
+  return {std::max(0.0, lo - surface.radius()), hi + surface.radius()};
+}
+
+template <int D, typename Direction, typename Accumulate>
+RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size_t rays, Direction&& direction,
+                  Accumulate&& accumulate) {
+  RayScan scan;
+  scan.rays = rays;
+  if (surface.points().empty()) {
+    scan.closed = false;
+    scan.bad_rays = rays;
+    scan.reason = "the point set is empty";
+    return scan;
+  }
+  const auto [r_lo, r_hi] = radial_range(surface, center);
+  const double step = 0.5 * surface.grid().spacing();
+  std::size_t none = 0, several = 0;
+  for (std::size_t k = 0; k < rays; ++k) {
+    const std::vector<double> roots = crossings_along_ray(surface, center, direction(k), r_lo, r_hi, step);
+    if (roots.size() == 1) {
+      accumulate(k, roots.front());
+    } else {
+      (roots.empty() ? none : several) += 1;
+    }
+  }
+  scan.bad_rays = none + several;
+  scan.closed = scan.bad_rays == 0;
+  if (!scan.closed)
+    scan.reason = std::to_string(none) + " of " + std::to_string(rays) + " rays miss the surface and " +
+                  std::to_string(several) + " cross it more than once";
+  return scan;
+}
+
+}  // namespace
+
+CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius, std::size_t rays) {
+  CircleError out;
+  const double dtheta = 2.0 * std::numbers::pi / static_cast<double>(rays);
+  auto direction = [&](std::size_t k) {
+    const double theta = (static_cast<double>(k) + 0.5) * dtheta;
+    return Vec<2>(std::cos(theta), std::sin(theta));
+  };
+  // Area between the curves in polar form: integral of |r^2 - R^2| / 2 d theta.
+  out.scan = scan_rays<2>(surface, center, rays, direction, [&](std::size_t, double r) {
+    out.l1 += 0.5 * std::abs(r * r - radius * radius) * dtheta;
+  });
+  return out;
+}
+
+SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius,
+                                std::size_t rays) {
+  SphereError out;
+  const double solid_angle = 4.0 * std::numbers::pi / static_cast<double>(rays);
+  const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  auto direction = [&](std::size_t k) {
+    const double z = 1.0 - (2.0 * static_cast<double>(k) + 1.0) / static_cast<double>(rays);
+    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden_angle * static_cast<double>(k);
+    return Vec<3>(s * std::cos(phi), s * std::sin(phi), z);
+  };
+  const double r3 = radius * radius * radius;
+  // Volume in spherical form: integral of r^3 / 3 d omega.
+  out.scan = scan_rays<3>(surface, center, rays, direction, [&](std::size_t, double r) {
+    out.volume += r * r * r / 3.0 * solid_angle;
+    out.symmetric_difference += std::abs(r * r * r - r3) / 3.0 * solid_angle;
+  });
+  out.exact_volume = 4.0 / 3.0 * std::numbers::pi * r3;
+  return out;
+}
+
+}  // namespace amls

@@ -1,0 +1,50 @@
+#pragma once
+// Accuracy and sampling-quality measures (issue: metrics), computed on the MLS
+// surface of a point set.
+#include <cstddef>
+#include <string>
+
+#include "core/amls_surface.hpp"
+
+namespace amls {
+
+// Nearest-neighbour spacing of a point set, in units of h.
+struct SpacingStats {
+  double min = 0.0;
+  double median = 0.0;
+  double max = 0.0;
+};
+
+template <int D>
+SpacingStats spacing_stats(const PointSet<D>& points, double h);
+
+// How the zero set of F meets rays cast from a centre: for a star-shaped
+// closed curve or surface, each ray crosses it exactly once.
+struct RayScan {
+  bool closed = true;           // every ray crossed exactly once
+  std::size_t rays = 0;
+  std::size_t bad_rays = 0;     // rays with no crossing or several
+  std::string reason;           // why it is not closed, if it is not
+};
+
+// 2D: the area between the zero set of F and the circle (center, radius) -
+// the L1 error of the paper's Table 2 - by rays from the centre.
+struct CircleError {
+  RayScan scan;
+  double l1 = 0.0;
+};
+CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius,
+                            std::size_t rays = 16384);
+
+// 3D: the enclosed volume and its symmetric difference with the sphere
+// (center, radius), by rays from the centre over a Fibonacci lattice of directions.
+struct SphereError {
+  RayScan scan;
+  double volume = 0.0;
+  double exact_volume = 0.0;
+  double symmetric_difference = 0.0;
+};
+SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius,
+                                std::size_t rays = 20000);
+
+}  // namespace amls

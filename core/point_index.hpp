@@ -1,0 +1,64 @@
+#pragma once
+// Neighbour queries over a point set (paper, section 3.1, Hash()). Points are
+// bucketed by cell in one sorted array (no linked lists); a sparse map takes a
+// cell to its run of points. Cells are as wide as the largest query radius, so
+// a query inspects at most 3^D cells whatever the grid spacing.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/flat_hash_map.hpp"
+#include "core/grid.hpp"
+#include "core/vec.hpp"
+
+namespace amls {
+
+template <int D>
+class PointIndex {
+ public:
+  // Buckets `positions` in cells of width `cell_size` anchored at `origin`.
+  // Throws std::invalid_argument for non-finite positions or positions too far
+  // from the origin for packed cell keys.
+  void build(const std::vector<Vec<D>>& positions, const Vec<D>& origin, double cell_size);
+
+  std::size_t size() const { return ids_.size(); }
+  double cell_size() const { return cells_ ? cells_->spacing() : 0.0; }
+
+  // Calls fn(id, position) for every indexed point p with |p - x| <= radius,
+  // in a fixed order (by cell, then by id).
+  template <typename Fn>
+  void for_each_within(const Vec<D>& x, double radius, Fn&& fn) const {
+    if (!cells_) return;
+    const double r2 = radius * radius;
+    const IVec<D> lo = cells_->cell_of(x - Vec<D>::Constant(radius));
+    const IVec<D> hi = cells_->cell_of(x + Vec<D>::Constant(radius));
+    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
+      if (const Run* run = runs_.find(Grid<D>::key(c))) {
+        for (std::uint32_t k = run->begin; k < run->end; ++k) {
+          if ((positions_[k] - x).squaredNorm() <= r2) fn(ids_[k], positions_[k]);
+        }
+      }
+    });
+  }
+
+  // The ids of the points within `radius` of x, appended to `out`.
+  void gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
+    for_each_within(x, radius, [&](std::uint32_t id, const Vec<D>&) { out.push_back(id); });
+  }
+
+ private:
+  struct Run {
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+  };
+
+  std::optional<Grid<D>> cells_;
+  std::vector<Vec<D>> positions_;  // sorted by cell
+  std::vector<std::uint32_t> ids_;  // original index of each sorted position
+  FlatHashMap<Run> runs_;
+};
+
+extern template class PointIndex<2>;
+extern template class PointIndex<3>;
+
+}  // namespace amls

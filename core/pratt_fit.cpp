@@ -1,0 +1,115 @@
+#include "core/pratt_fit.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+
+namespace amls {
+
+const char* to_string(FitStatus status) {
+  switch (status) {
+    case FitStatus::ok: return "ok";
+    case FitStatus::too_few_neighbours: return "too few neighbours";
+    case FitStatus::degenerate: return "degenerate neighbourhood";
+    case FitStatus::no_solution: return "no admissible fit";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// Pratt's constraint |b|^2 - 4 a0 a2 as a quadratic form alpha^T C alpha.
+template <int M>
+Eigen::Matrix<double, M, 1> apply_constraint(const Eigen::Matrix<double, M, 1>& x) {
+  Eigen::Matrix<double, M, 1> y = x;
+  y[0] = -2.0 * x[M - 1];
+  y[M - 1] = -2.0 * x[0];
+  return y;
+}
+
+// Relative size below which a direction of the neighbourhood's scatter counts as absent.
+constexpr double kFlatness = 1e-12;
+// Iterations of the fast path before the dense eigensolver takes over.
+constexpr int kMaxInverseIterations = 12;
+
+}  // namespace
+
+template <int D>
+FitStatus PrattFit<D>::solve(const Vec<D>& carried, Vec<D>& normal) {
+  if (count_ < D + 1) return FitStatus::too_few_neighbours;
+
+  // The neighbourhood must span a line (2D) or a plane (3D); otherwise the fit's
+  // normal is not determined by the data.
+  const Eigen::SelfAdjointEigenSolver<Mat<D>> spread(scatter_, Eigen::EigenvaluesOnly);
+  const auto& ev = spread.eigenvalues();  // ascending
+  if (!(ev[1] > kFlatness * ev[D - 1]) || !(ev[D - 1] > 0.0)) return FitStatus::degenerate;
+
+  Coeffs start = Coeffs::Zero();
+  start.template segment<D>(1) = carried;
+  if (!solve_by_inverse_iteration(start) && !solve_by_eigen_decomposition()) return FitStatus::no_solution;
+
+  Vec<D> b = alpha_.template segment<D>(1);
+  const double length = b.norm();
+  if (!(length > kFlatness)) return FitStatus::degenerate;
+  b /= length;
+  normal = b.dot(carried) < 0.0 ? Vec<D>(-b) : b;
+  return FitStatus::ok;
+}
+
+// For a well-sampled surface the wanted lambda is tiny and the others are
+// O(sum of weights), so inverse iteration alpha <- A^-1 C alpha from the plane of
+// the carried normal converges in a few steps. It finds the lambda of smallest
+// magnitude; the caller falls back when that one is not admissible (negative,
+// i.e. alpha^T C alpha <= 0) or when A is not positive definite.
+template <int D>
+bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
+  const Eigen::LLT<Matrix> llt(a_);
+  if (llt.info() != Eigen::Success) return false;
+  const double scale = a_.norm();
+  Coeffs x = start.normalized();
+  for (int it = 0; it < kMaxInverseIterations; ++it) {
+    const Coeffs y = llt.solve(apply_constraint<kBasis>(x));
+    const double n = y.norm();
+    if (!std::isfinite(n) || n == 0.0) return false;
+    x = y / n;
+    const Coeffs cx = apply_constraint<kBasis>(x);
+    const double xcx = x.dot(cx);
+    if (!(xcx > 0.0)) continue;
+    const double lambda = x.dot(a_ * x) / xcx;
+    if ((a_ * x - lambda * cx).norm() <= 1e-13 * scale) {
+      alpha_ = x / std::sqrt(xcx);
+      return true;
+    }
+  }
+  return false;
+}
+
+// The general case: eigenpairs of C^-1 A (real for this pencil), keeping the
+// smallest non-negative lambda whose eigenvector satisfies alpha^T C alpha > 0.
+template <int D>
+bool PrattFit<D>::solve_by_eigen_decomposition() {
+  Matrix c_inverse_a = a_;
+  c_inverse_a.row(0) = -0.5 * a_.row(kBasis - 1);
+  c_inverse_a.row(kBasis - 1) = -0.5 * a_.row(0);
+  const Eigen::EigenSolver<Matrix> solver(c_inverse_a);
+  if (solver.info() != Eigen::Success) return false;
+
+  const double tolerance = 1e-12 * a_.norm();
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kBasis; ++k) {
+    const auto value = solver.eigenvalues()[k];
+    if (std::abs(value.imag()) > tolerance || value.real() < -tolerance) continue;
+    const Coeffs x = solver.eigenvectors().col(k).real();
+    const double xcx = x.dot(apply_constraint<kBasis>(x));
+    if (!(xcx > 0.0) || value.real() >= best) continue;
+    best = value.real();
+    alpha_ = x / std::sqrt(xcx);
+  }
+  return std::isfinite(best);
+}
+
+template class PrattFit<2>;
+template class PrattFit<3>;
+
+}  // namespace amls

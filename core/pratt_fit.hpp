@@ -1,0 +1,64 @@
+#pragma once
+// Step 1 of the AMLS definition (paper, section 2, eqs. 4-6): the pseudo-normal
+// at a point is the normal of the algebraic sphere f(u) = a0 + b.u + a2 |u|^2
+// that minimises sum_j w_j f(u_j)^2 under Pratt's constraint |b|^2 - 4 a0 a2 = 1.
+// With the basis q(u) = (1, u, |u|^2), A = sum_j w_j q(u_j) q(u_j)^T and the
+// constraint matrix C, the minimiser is the eigenvector of A alpha = lambda C alpha
+// with the smallest non-negative lambda. Coordinates are centred at the point and
+// scaled by Delta, so A is well conditioned and the normal is b / |b|.
+#include <Eigen/Core>
+
+#include "core/vec.hpp"
+
+namespace amls {
+
+enum class FitStatus {
+  ok,
+  too_few_neighbours,  // fewer weighted neighbours than the fit has degrees of freedom
+  degenerate,          // all neighbours coincide, or (3D) they lie on one line
+  no_solution,         // the eigenproblem has no admissible eigenvector
+};
+
+const char* to_string(FitStatus status);
+
+template <int D>
+class PrattFit {
+ public:
+  static constexpr int kBasis = D + 2;
+  using Coeffs = Eigen::Matrix<double, kBasis, 1>;
+  using Matrix = Eigen::Matrix<double, kBasis, kBasis>;
+
+  // u: neighbour position relative to the point, divided by Delta; w: its weight.
+  void add(const Vec<D>& u, double w) {
+    if (w <= 0.0) return;
+    Coeffs q;
+    q[0] = 1.0;
+    q.template segment<D>(1) = u;
+    q[D + 1] = u.squaredNorm();
+    a_.noalias() += w * q * q.transpose();
+    scatter_.noalias() += w * u * u.transpose();
+    ++count_;
+  }
+
+  // Solves the fit; on success writes the unit normal, oriented to agree with
+  // `carried`, to `normal`. On failure `normal` is left untouched.
+  FitStatus solve(const Vec<D>& carried, Vec<D>& normal);
+
+  // The fitted coefficients (a0, b, a2) of the last successful solve, scaled
+  // so that alpha^T C alpha = 1.
+  const Coeffs& coefficients() const { return alpha_; }
+
+ private:
+  bool solve_by_inverse_iteration(const Coeffs& start);
+  bool solve_by_eigen_decomposition();
+
+  Matrix a_ = Matrix::Zero();
+  Mat<D> scatter_ = Mat<D>::Zero();  // second moment about the point, for the degeneracy test
+  int count_ = 0;
+  Coeffs alpha_ = Coeffs::Zero();
+};
+
+extern template class PrattFit<2>;
+extern template class PrattFit<3>;
+
+}  // namespace amls

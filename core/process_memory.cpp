@@ -1,0 +1,17 @@
+#include "core/process_memory.hpp"
+
+#include <fstream>
+#include <string>
+
+namespace amls {
+
+double peak_memory_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // the value is in kB
+  }
+  return 0.0;
+}
+
+}  // namespace amls

@@ -1,0 +1,81 @@
+#pragma once
+// Marching-cubes-like point creation (paper, section 3.2): the new points are
+// the crossings of S(P) with the grid edges near the old points.
+//
+// Update_Function() evaluates F once at every grid vertex the walk will read.
+// Resample() then visits, for each point p in order, the corners of the block
+// [H(p) - 1, H(p) + 3)^D; a corner not yet VISITED has its D edges towards +x,
+// +y (+z) checked for a sign change (a value of exactly 0 counts as positive,
+// so a surface through a vertex gives one crossing per edge leaving it towards
+// negative values, all at that vertex, and HAVECLOSEPOINT keeps one). A crossing
+// becomes a new point only if the edge end nearer to it is not yet
+// HAVECLOSEPOINT; that end then becomes HAVECLOSEPOINT.
+//
+// The decisions depend only on the walk order and the crossings' positions, so
+// the crossings are first listed in walk order, then located in parallel, then
+// settled in order: the result is the sequential algorithm's, for any thread
+// count.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/amls_surface.hpp"
+#include "core/flat_hash_map.hpp"
+
+namespace amls {
+
+enum class Variant {
+  exact,         // the crossing is the root of F on the edge, to near machine precision
+  interpolated,  // the crossing is the zero of the linear interpolant of the vertex values
+};
+
+const char* to_string(Variant variant);
+// Throws std::invalid_argument naming the accepted values.
+Variant parse_variant(const std::string& name);
+
+struct ResampleStats {
+  std::size_t vertices = 0;            // vertices where F was evaluated
+  std::size_t undefined_vertices = 0;  // of which F was undefined
+  std::size_t crossings = 0;           // edges with a sign change
+  std::size_t inserted = 0;            // new points
+  std::size_t root_fallbacks = 0;      // exact roots that met an undefined F and took the interpolant's zero
+  std::size_t root_evaluations = 0;    // evaluations of F by the root finder
+};
+
+template <int D>
+class Resampler {
+ public:
+  // Update_Function().
+  void update_function(const AmlsSurface<D>& surface, ThreadPool& pool);
+  // Resample(); requires update_function() on the same surface first.
+  PointSet<D> resample(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
+
+  const ResampleStats& stats() const { return stats_; }
+
+  // The value of F cached at a vertex by the last update_function(), if any.
+  const Evaluation<D>* vertex_value(const IVec<D>& vertex) const;
+
+ private:
+  struct Crossing {
+    std::uint32_t from;  // slot of the edge's lower vertex
+    std::uint32_t to;    // slot of its upper vertex
+    int axis;
+    double t = 0.0;      // position along the edge, 0 at `from`, 1 at `to`
+    Vec<D> normal = Vec<D>::Zero();
+  };
+
+  void list_crossings(const AmlsSurface<D>& surface);
+  void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
+
+  FlatHashMap<std::uint32_t> slot_of_;  // vertex key -> slot
+  std::vector<std::uint64_t> keys_;     // slot -> vertex key
+  std::vector<Evaluation<D>> values_;   // slot -> F
+  std::vector<std::uint8_t> flags_;     // slot -> VISITED | HAVECLOSEPOINT
+  std::vector<Crossing> crossings_;
+  ResampleStats stats_;
+};
+
+extern template class Resampler<2>;
+extern template class Resampler<3>;
+
+}  // namespace amls

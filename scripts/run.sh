@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Set-up (packages, configure, build), then the main job: the single-vortex
+# test at a small grid, printing its report.
+set -euo pipefail
+repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$repo_root/scripts/setup.sh"
+"${AMLS_BUILD_DIR:-$repo_root/build}/app/amls" vortex --grid 128
