@@ -30,6 +30,8 @@ nlohmann::json to_json(const FlowTestReport& r) {
                     {"resample", r.timings.resample}, {"deform", r.timings.deform},
                     {"hash", r.timings.hash}, {"total", r.timings.total()}};
   j["peak_memory_mib"] = r.peak_memory_mib;
+  j["work"] = {{"vertex_evaluations", r.vertex_evaluations}, {"crossings", r.crossings},
+               {"root_evaluations", r.root_evaluations}, {"failed_normal_fits", r.failed_normal_fits}};
   if (r.dimension == 2) {
     j["l1_error"] = r.l1_error;
   } else {
@@ -60,6 +62,9 @@ void print_table(std::ostream& out, const FlowTestReport& r) {
   row("total", total);
   std::snprintf(line, sizeof line, "points: initial %zu, max %zu, final %zu; spacing/h min %.3f median %.3f max %.3f\n",
                 r.points_initial, r.points_max, r.points_final, r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
+  out << line;
+  std::snprintf(line, sizeof line, "work: %zu vertex evaluations, %zu crossings, %zu root-finder evaluations, %zu failed normal fits\n",
+                r.vertex_evaluations, r.crossings, r.root_evaluations, r.failed_normal_fits);
   out << line;
   if (r.dimension == 2) {
     std::snprintf(line, sizeof line, "L1 error: %.6g\n", r.l1_error);

@@ -1,5 +1,7 @@
 #include "core/amls_surface.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -82,22 +84,46 @@ Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
 }
 
 template <int D>
-Evaluation<D> AmlsSurface<D>::evaluate_among(const Vec<D>& x, std::span<const std::uint32_t> candidates) const {
+void AmlsSurface<D>::gather(const Vec<D>& x, double radius, Neighbourhood<D>& out) const {
   require_ready();
+  out.positions.clear();
+  out.normals.clear();
+  index_.for_each_within(x, radius, [&](std::uint32_t id, const Vec<D>& q) {
+    out.positions.push_back(q);
+    out.normals.push_back(pseudo_normals_[id]);
+  });
+}
+
+template <int D>
+Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
   const double inverse_r2 = 1.0 / (radius_ * radius_);
   GradientFit<D> fit;
-  for (std::uint32_t id : candidates) {
-    const Vec<D> d = points_.positions[id] - x;
+  for (std::size_t k = 0; k < neighbourhood.positions.size(); ++k) {
+    const Vec<D> d = neighbourhood.positions[k] - y;
     const double w = weight_of_squared_ratio(d.squaredNorm() * inverse_r2);
-    if (w > 0.0) fit.add(d, pseudo_normals_[id], w);
+    if (w > 0.0) fit.add(d, neighbourhood.normals[k], w);
   }
   return fit.solve(parameters_.min_weight);
 }
 
 template <int D>
-void AmlsSurface<D>::gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
-  if (!hashed_) throw std::logic_error("AmlsSurface queried before hash_points()");
-  index_.gather(x, radius, out);
+void AmlsSurface<D>::evaluate_many(std::span<const Vec<D>> xs, std::span<Evaluation<D>> out) const {
+  require_ready();
+  const Grid<D> groups(grid_.origin(), radius_);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) order[i] = {Grid<D>::key(groups.cell_of(xs[i])), static_cast<std::uint32_t>(i)};
+  std::sort(order.begin(), order.end());
+  // Every point within Delta of a group's cell lies within this distance of its centre.
+  const double reach = radius_ * (1.0 + 0.5 * std::sqrt(static_cast<double>(D)));
+  Neighbourhood<D> neighbourhood;
+  for (std::size_t begin = 0; begin < order.size();) {
+    std::size_t end = begin + 1;
+    while (end < order.size() && order[end].first == order[begin].first) ++end;
+    const Vec<D> centre = groups.vertex_position(Grid<D>::unkey(order[begin].first)).array() + 0.5 * radius_;
+    gather(centre, reach, neighbourhood);
+    for (std::size_t k = begin; k < end; ++k) out[order[k].second] = evaluate_in(neighbourhood, xs[order[k].second]);
+    begin = end;
+  }
 }
 
 template class AmlsSurface<2>;

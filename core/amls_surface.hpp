@@ -25,6 +25,14 @@ struct AmlsParameters {
   double min_weight = 0.2;
 };
 
+// Positions and pseudo-normals of the points near a region, copied side by side
+// so that repeated evaluations there read contiguous memory.
+template <int D>
+struct Neighbourhood {
+  std::vector<Vec<D>> positions;
+  std::vector<Vec<D>> normals;
+};
+
 struct NormalStats {
   std::size_t ok = 0;
   std::size_t too_few_neighbours = 0;
@@ -60,11 +68,15 @@ class AmlsSurface {
 
   // F(x) and the fit's gradient, over all points within Delta of x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
-  // The same over `candidates` only; they must include every point within
-  // Delta of x (e.g. all points within Delta + h/2 of an edge's midpoint).
-  Evaluation<D> evaluate_among(const Vec<D>& x, std::span<const std::uint32_t> candidates) const;
-  // Appends the ids of the points within `radius` of x.
-  void gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const;
+  // F at many positions at once: positions are grouped by cell of side Delta
+  // and each group's neighbours are gathered once.
+  void evaluate_many(std::span<const Vec<D>> xs, std::span<Evaluation<D>> out) const;
+
+  // Fills `out` with the points within `radius` (>= Delta) of x; any y within
+  // radius - Delta of x can then be evaluated with evaluate_in().
+  void gather(const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
+  // F at y from a neighbourhood holding every point within Delta of y.
+  Evaluation<D> evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
 
  private:
   void require_ready() const;

@@ -17,8 +17,13 @@ template <int D>
 void FlowDeformation<D>::deform(PointSet<D>& points, double t0, double t1, ThreadPool& pool) const {
   const double dt = (t1 - t0) / substeps_;
   const VelocityField<D>& v = *field_;
-  auto normal_rate = [&](const Vec<D>& x, const Vec<D>& n, double t) -> Vec<D> {
-    return -v.jacobian(x, t).transpose() * n;
+  // The state is (x, n) with dx/dt = v(x, t) and dn/dt = -J(x, t)^T n.
+  struct Rate {
+    Vec<D> x, n;
+  };
+  auto rate = [&](const Vec<D>& x, const Vec<D>& n, double t) -> Rate {
+    const FlowSample<D> f = v.sample(x, t);
+    return {f.velocity, -f.jacobian.transpose() * n};
   };
   pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t i = begin; i < end; ++i) {
@@ -26,19 +31,12 @@ void FlowDeformation<D>::deform(PointSet<D>& points, double t0, double t1, Threa
       Vec<D> n = points.normals[i];
       for (int s = 0; s < substeps_; ++s) {
         const double t = t0 + s * dt;
-        const Vec<D> kx1 = v.velocity(x, t);
-        const Vec<D> kn1 = normal_rate(x, n, t);
-        const Vec<D> x2 = x + 0.5 * dt * kx1, n2 = n + 0.5 * dt * kn1;
-        const Vec<D> kx2 = v.velocity(x2, t + 0.5 * dt);
-        const Vec<D> kn2 = normal_rate(x2, n2, t + 0.5 * dt);
-        const Vec<D> x3 = x + 0.5 * dt * kx2, n3 = n + 0.5 * dt * kn2;
-        const Vec<D> kx3 = v.velocity(x3, t + 0.5 * dt);
-        const Vec<D> kn3 = normal_rate(x3, n3, t + 0.5 * dt);
-        const Vec<D> x4 = x + dt * kx3, n4 = n + dt * kn3;
-        const Vec<D> kx4 = v.velocity(x4, t + dt);
-        const Vec<D> kn4 = normal_rate(x4, n4, t + dt);
-        x += dt / 6.0 * (kx1 + 2.0 * kx2 + 2.0 * kx3 + kx4);
-        n += dt / 6.0 * (kn1 + 2.0 * kn2 + 2.0 * kn3 + kn4);
+        const Rate k1 = rate(x, n, t);
+        const Rate k2 = rate(x + 0.5 * dt * k1.x, n + 0.5 * dt * k1.n, t + 0.5 * dt);
+        const Rate k3 = rate(x + 0.5 * dt * k2.x, n + 0.5 * dt * k2.n, t + 0.5 * dt);
+        const Rate k4 = rate(x + dt * k3.x, n + dt * k3.n, t + dt);
+        x += dt / 6.0 * (k1.x + 2.0 * k2.x + 2.0 * k3.x + k4.x);
+        n += dt / 6.0 * (k1.n + 2.0 * k2.n + 2.0 * k3.n + k4.n);
       }
       points.positions[i] = x;
       const double length = n.norm();

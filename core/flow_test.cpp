@@ -36,6 +36,10 @@ void run_flow(DeformingSurface<D>& surface, std::shared_ptr<const VelocityField<
     const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
     const StepStats stats = surface.step(flow, t0, t1);
     report.timings += stats.timings;
+    report.vertex_evaluations += stats.resample.vertices;
+    report.crossings += stats.resample.crossings;
+    report.root_evaluations += stats.resample.root_evaluations;
+    report.failed_normal_fits += stats.normals.failed();
     report.steps = k + 1;
     const std::size_t n = surface.points().size();
     report.points_max = std::max(report.points_max, n);

@@ -35,6 +35,12 @@ struct FlowTestReport {
   std::size_t points_final = 0;
   SpacingStats spacing_h;  // of the final point set
   PhaseTimings timings;
+  // Work done over the run: F evaluated at grid vertices, edges found crossing,
+  // F evaluated by the exact variant's root finder, Pratt fits that failed.
+  std::size_t vertex_evaluations = 0;
+  std::size_t crossings = 0;
+  std::size_t root_evaluations = 0;
+  std::size_t failed_normal_fits = 0;
   double peak_memory_mib = 0.0;
   double l1_error = 0.0;              // 2D
   double volume_loss = 0.0;           // 3D: (V0 - V) / V0

@@ -1,5 +1,6 @@
 #include "core/resampler.hpp"
 
+#include <span>
 #include <stdexcept>
 
 #include "core/root_finding.hpp"
@@ -51,9 +52,12 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
     });
   }
 
+  std::vector<Vec<D>> positions(keys_.size());
+  for (std::size_t s = 0; s < keys_.size(); ++s) positions[s] = grid.vertex_position(Grid<D>::unkey(keys_[s]));
   values_.resize(keys_.size());
   pool.parallel_for(keys_.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t s = begin; s < end; ++s) values_[s] = surface.evaluate(grid.vertex_position(Grid<D>::unkey(keys_[s])));
+    surface.evaluate_many(std::span(positions).subspan(begin, end - begin),
+                          std::span(values_).subspan(begin, end - begin));
   });
 
   stats_ = ResampleStats{};
@@ -102,7 +106,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
   std::vector<std::size_t> fallbacks(evaluations.size(), 0);
 
   pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int block) {
-    std::vector<std::uint32_t> candidates;
+    Neighbourhood<D> candidates;
     for (std::size_t c = begin; c < end; ++c) {
       Crossing& x = crossings_[c];
       const Evaluation<D>& f0 = values_[x.from];
@@ -116,20 +120,18 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         Vec<D> direction = Vec<D>::Zero();
         direction[x.axis] = h;
         // Every point that can reach the edge, gathered once for all iterations.
-        candidates.clear();
         surface.gather(start + 0.5 * direction, surface.radius() + 0.5 * h, candidates);
-        Evaluation<D> last;
         const RootResult root = find_root_illinois(
             [&](double t) -> std::optional<double> {
-              last = surface.evaluate_among(start + t * direction, candidates);
-              if (!last.defined) return std::nullopt;
-              return last.value;
+              const Evaluation<D> e = surface.evaluate_in(candidates, start + t * direction);
+              if (!e.defined) return std::nullopt;
+              return e.value;
             },
             0.0, 1.0, f0.value, f1.value, kRootTolerance);
         evaluations[static_cast<std::size_t>(block)] += static_cast<std::size_t>(root.evaluations);
         if (root.ok) {
           x.t = root.t;
-          const Evaluation<D> at_root = surface.evaluate_among(start + root.t * direction, candidates);
+          const Evaluation<D> at_root = surface.evaluate_in(candidates, start + root.t * direction);
           if (at_root.defined && at_root.gradient.squaredNorm() > 0.0) normal = at_root.gradient;
         } else {
           ++fallbacks[static_cast<std::size_t>(block)];

@@ -10,42 +10,38 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 }
 
-Vec<2> SingleVortex::velocity(const Vec<2>& p, double t) const {
+FlowSample<2> SingleVortex::sample(const Vec<2>& p, double t) const {
   const double amplitude = 2.0 * std::cos(kPi * t / period_);
-  const double sx = std::sin(kPi * p.x()), cx = std::cos(kPi * p.x());
-  const double sy = std::sin(kPi * p.y()), cy = std::cos(kPi * p.y());
-  return amplitude * Vec<2>(-sx * sx * sy * cy, sx * cx * sy * sy);
-}
-
-Mat<2> SingleVortex::jacobian(const Vec<2>& p, double t) const {
-  const double amplitude = 2.0 * std::cos(kPi * t / period_);
-  const double s2x = std::sin(2 * kPi * p.x()), c2x = std::cos(2 * kPi * p.x());
-  const double s2y = std::sin(2 * kPi * p.y()), c2y = std::cos(2 * kPi * p.y());
-  const double sx = std::sin(kPi * p.x()), sy = std::sin(kPi * p.y());
-  Mat<2> j;
-  j << -0.5 * kPi * s2x * s2y, -kPi * sx * sx * c2y,  //
+  double sx, cx, sy, cy;
+  sincos(kPi * p.x(), &sx, &cx);
+  sincos(kPi * p.y(), &sy, &cy);
+  // Double angles from the single ones: sin 2a = 2 sin a cos a, cos 2a = 1 - 2 sin^2 a.
+  const double s2x = 2 * sx * cx, c2x = 1 - 2 * sx * sx;
+  const double s2y = 2 * sy * cy, c2y = 1 - 2 * sy * sy;
+  FlowSample<2> f;
+  f.velocity = amplitude * Vec<2>(-sx * sx * sy * cy, sx * cx * sy * sy);
+  f.jacobian << -0.5 * kPi * s2x * s2y, -kPi * sx * sx * c2y,  //
       kPi * c2x * sy * sy, 0.5 * kPi * s2x * s2y;
-  return amplitude * j;
+  f.jacobian *= amplitude;
+  return f;
 }
 
-Vec<3> EnrightField::velocity(const Vec<3>& p, double t) const {
+FlowSample<3> EnrightField::sample(const Vec<3>& p, double t) const {
   const double g = std::cos(kPi * t / period_);
-  const double sx = std::sin(kPi * p.x()), sy = std::sin(kPi * p.y()), sz = std::sin(kPi * p.z());
-  const double s2x = std::sin(2 * kPi * p.x()), s2y = std::sin(2 * kPi * p.y()), s2z = std::sin(2 * kPi * p.z());
-  return g * Vec<3>(2 * sx * sx * s2y * s2z, -s2x * sy * sy * s2z, -s2x * s2y * sz * sz);
-}
-
-Mat<3> EnrightField::jacobian(const Vec<3>& p, double t) const {
-  const double g = std::cos(kPi * t / period_);
-  const double sx = std::sin(kPi * p.x()), sy = std::sin(kPi * p.y()), sz = std::sin(kPi * p.z());
-  const double s2x = std::sin(2 * kPi * p.x()), s2y = std::sin(2 * kPi * p.y()), s2z = std::sin(2 * kPi * p.z());
-  const double c2x = std::cos(2 * kPi * p.x()), c2y = std::cos(2 * kPi * p.y()), c2z = std::cos(2 * kPi * p.z());
+  double sx, cx, sy, cy, sz, cz;
+  sincos(kPi * p.x(), &sx, &cx);
+  sincos(kPi * p.y(), &sy, &cy);
+  sincos(kPi * p.z(), &sz, &cz);
+  const double s2x = 2 * sx * cx, s2y = 2 * sy * cy, s2z = 2 * sz * cz;
+  const double c2x = 1 - 2 * sx * sx, c2y = 1 - 2 * sy * sy, c2z = 1 - 2 * sz * sz;
+  FlowSample<3> f;
+  f.velocity = g * Vec<3>(2 * sx * sx * s2y * s2z, -s2x * sy * sy * s2z, -s2x * s2y * sz * sz);
   // d/ds sin^2(pi s) = pi sin(2 pi s); d/ds sin(2 pi s) = 2 pi cos(2 pi s).
-  Mat<3> j;
-  j << 2 * kPi * s2x * s2y * s2z, 4 * kPi * sx * sx * c2y * s2z, 4 * kPi * sx * sx * s2y * c2z,  //
-      -2 * kPi * c2x * sy * sy * s2z, -kPi * s2x * s2y * s2z, -2 * kPi * s2x * sy * sy * c2z,     //
+  f.jacobian << 2 * kPi * s2x * s2y * s2z, 4 * kPi * sx * sx * c2y * s2z, 4 * kPi * sx * sx * s2y * c2z,  //
+      -2 * kPi * c2x * sy * sy * s2z, -kPi * s2x * s2y * s2z, -2 * kPi * s2x * sy * sy * c2z,                //
       -2 * kPi * c2x * s2y * sz * sz, -2 * kPi * s2x * c2y * sz * sz, -kPi * s2x * s2y * s2z;
-  return g * j;
+  f.jacobian *= g;
+  return f;
 }
 
 template <int D>
@@ -61,13 +57,8 @@ RigidRotation<D>::RigidRotation(const Vec<D>& center, double angular_velocity, c
 }
 
 template <int D>
-Vec<D> RigidRotation<D>::velocity(const Vec<D>& x, double) const {
-  return generator_ * (x - center_);
-}
-
-template <int D>
-Mat<D> RigidRotation<D>::jacobian(const Vec<D>&, double) const {
-  return generator_;
+FlowSample<D> RigidRotation<D>::sample(const Vec<D>& x, double) const {
+  return {generator_ * (x - center_), generator_};
 }
 
 template class RigidRotation<2>;

@@ -8,13 +8,19 @@
 
 namespace amls {
 
+// The velocity at a point and its Jacobian J_ij = d v_i / d x_j, computed
+// together because they share their (costly) trigonometry.
+template <int D>
+struct FlowSample {
+  Vec<D> velocity;
+  Mat<D> jacobian;
+};
+
 template <int D>
 class VelocityField {
  public:
   virtual ~VelocityField() = default;
-  virtual Vec<D> velocity(const Vec<D>& x, double t) const = 0;
-  // J_ij = d v_i / d x_j.
-  virtual Mat<D> jacobian(const Vec<D>& x, double t) const = 0;
+  virtual FlowSample<D> sample(const Vec<D>& x, double t) const = 0;
 };
 
 // The single vortex of eq. (12) with the sign lost in print restored, so that it
@@ -24,8 +30,7 @@ class VelocityField {
 class SingleVortex final : public VelocityField<2> {
  public:
   explicit SingleVortex(double period = 8.0) : period_(period) {}
-  Vec<2> velocity(const Vec<2>& x, double t) const override;
-  Mat<2> jacobian(const Vec<2>& x, double t) const override;
+  FlowSample<2> sample(const Vec<2>& x, double t) const override;
 
  private:
   double period_;
@@ -37,8 +42,7 @@ class SingleVortex final : public VelocityField<2> {
 class EnrightField final : public VelocityField<3> {
  public:
   explicit EnrightField(double period = 3.0) : period_(period) {}
-  Vec<3> velocity(const Vec<3>& x, double t) const override;
-  Mat<3> jacobian(const Vec<3>& x, double t) const override;
+  FlowSample<3> sample(const Vec<3>& x, double t) const override;
 
  private:
   double period_;
@@ -50,8 +54,7 @@ template <int D>
 class RigidRotation final : public VelocityField<D> {
  public:
   RigidRotation(const Vec<D>& center, double angular_velocity, const Vec<3>& axis = Vec<3>::UnitZ());
-  Vec<D> velocity(const Vec<D>& x, double t) const override;
-  Mat<D> jacobian(const Vec<D>& x, double t) const override;
+  FlowSample<D> sample(const Vec<D>& x, double t) const override;
 
  private:
   Vec<D> center_;
