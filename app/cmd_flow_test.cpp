@@ -31,6 +31,10 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   cmd->add_option("--radius-factor", options->config.radius_factor, "influence radius Delta in units of h")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_option("--min-weight", options->config.min_weight,
+                  "F is undefined where the neighbours' weights sum to less than this")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_option("--dt", options->config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("--substeps", options->config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("--threads", options->config.threads, "worker threads (results do not depend on it)")

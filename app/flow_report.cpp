@@ -15,6 +15,7 @@ nlohmann::json to_json(const FlowTestReport& r) {
   j["grid"] = r.config.grid;
   j["variant"] = to_string(r.config.variant);
   j["radius_factor"] = r.config.radius_factor;
+  j["min_weight"] = r.config.min_weight;
   j["dt"] = r.config.dt;
   j["substeps"] = r.config.substeps;
   j["steps"] = r.steps;

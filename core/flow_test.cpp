@@ -83,7 +83,7 @@ FlowTestReport run_vortex_test(const FlowTestConfig& config, const FlowProgress&
   const Vec<2> center(0.5, 0.75);
   const double radius = 0.15;
   const Grid<2> grid = Grid<2>::unit(config.grid);
-  const AmlsParameters parameters{config.radius_factor};
+  const AmlsParameters parameters{config.radius_factor, config.min_weight};
   DeformingSurface<2> surface(grid, parameters, config.variant, config.threads);
   const auto count = static_cast<std::size_t>(std::ceil(2.0 * std::numbers::pi * radius / (0.5 * grid.spacing())));
   surface.set_points(sample_circle(center, radius, count));
@@ -103,7 +103,7 @@ FlowTestReport run_enright_test(const FlowTestConfig& config, const FlowProgress
   const Vec<3> center(0.35, 0.35, 0.35);
   const double radius = 0.15;
   const Grid<3> grid = Grid<3>::unit(config.grid);
-  const AmlsParameters parameters{config.radius_factor};
+  const AmlsParameters parameters{config.radius_factor, config.min_weight};
   DeformingSurface<3> surface(grid, parameters, config.variant, config.threads);
   const double area = 4.0 * std::numbers::pi * radius * radius;
   const auto count = static_cast<std::size_t>(std::ceil(area / std::pow(0.5 * grid.spacing(), 2)));

@@ -17,6 +17,7 @@ struct FlowTestConfig {
   int grid = 256;  // cells per unit length: h = 1 / grid
   Variant variant = Variant::exact;
   double radius_factor = 3.0;
+  double min_weight = AmlsParameters{}.min_weight;
   double dt = 0.01;
   int substeps = 1;
   int threads = 1;

@@ -1,0 +1,60 @@
+#include <doctest/doctest.h>
+
+#include "core/flow_deformation.hpp"
+#include "core/flow_test.hpp"
+#include "core/shapes.hpp"
+
+using namespace amls;
+
+TEST_CASE("the single vortex at 128^2 (exact) matches the paper's Table 2 within 5%") {
+  FlowTestConfig config;
+  config.grid = 128;
+  const FlowTestReport r = run_vortex_test(config);
+  CHECK_FALSE(r.broken);
+  CHECK(r.steps == 800);
+  CHECK(r.l1_error <= 0.0068);  // paper: 0.00643
+  CHECK(r.l1_error > 0.0);
+  CHECK(r.points_final > 50);
+  CHECK(r.spacing_h.min > 0.25);
+  CHECK(r.spacing_h.max < 2.0);
+}
+
+TEST_CASE("flow-test results do not depend on the thread count") {
+  FlowTestConfig config;
+  config.grid = 64;
+  config.dt = 0.04;
+  const FlowTestReport one = run_vortex_test(config);
+  config.threads = 3;
+  const FlowTestReport three = run_vortex_test(config);
+  CHECK(one.l1_error == three.l1_error);
+  CHECK(one.points_final == three.points_final);
+  CHECK(one.points_max == three.points_max);
+}
+
+TEST_CASE("a short Enright run conserves the enclosed volume") {
+  // The field is divergence-free, so the volume stays V0 at every time; early
+  // on the shape is still star-shaped about its centroid.
+  ThreadPool pool(2);
+  const Grid<3> grid = Grid<3>::unit(48);
+  DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, 2);
+  surface.set_points(sample_sphere(Vec<3>(0.35, 0.35, 0.35), 0.15, 6000));
+  surface.resample_only();
+  const FlowDeformation<3> flow(std::make_shared<EnrightField>(3.0), 1);
+  for (int k = 0; k < 15; ++k) surface.step(flow, 0.01 * k, 0.01 * (k + 1));
+  surface.refresh_normals();
+  Vec<3> centroid = Vec<3>::Zero();
+  for (const auto& p : surface.points().positions) centroid += p;
+  centroid /= static_cast<double>(surface.points().size());
+  const SphereError e = sphere_volume_error(surface.surface(), centroid, 0.15, 4000);
+  CHECK(e.scan.closed);
+  CHECK(std::abs(e.volume - e.exact_volume) / e.exact_volume < 0.01);
+}
+
+TEST_CASE("the vortex report flags a run whose curve breaks") {
+  // 16^2 is far too coarse for a circle of radius 0.15 (about 2.4 cells).
+  FlowTestConfig config;
+  config.grid = 16;
+  const FlowTestReport r = run_vortex_test(config);
+  CHECK(r.broken);
+  CHECK_FALSE(r.status_reason.empty());
+}
