@@ -5,5 +5,6 @@
 namespace amls::app {
 
 void add_flow_test_commands(CLI::App& app);
+void add_resample_command(CLI::App& app);
 
 }  // namespace amls::app

@@ -1,0 +1,84 @@
+// amls resample: one resampling of a point set with oriented normals.
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "app/commands.hpp"
+#include "core/point_set_io.hpp"
+#include "core/point_set_resampling.hpp"
+
+namespace amls::app {
+
+namespace {
+
+struct ResampleOptions {
+  PointSetResampling resampling;
+  std::string input;
+  std::string output;
+  std::string variant = "exact";
+  int dimension = 0;
+};
+
+template <int D>
+void resample_and_write(const PointSet<D>& input, const ResampleOptions& options, PointFileFormat format) {
+  const ResampledPointSet<D> result = resample_point_set(input, options.resampling);
+  if (result.points.empty())
+    throw std::runtime_error(
+        "resampling produced no points: the surface has no crossing with the grid near the "
+        "points (is the input too sparse for h = " +
+        std::to_string(result.grid.spacing()) + " and --radius-factor " +
+        std::to_string(options.resampling.radius_factor) + "?)");
+  write_point_set(options.output, result.points, format);
+  std::cout << "resample (" << D << "D, " << to_string(options.resampling.variant) << "): " << input.size()
+            << " points in -> " << result.points.size() << " points out, h = " << result.grid.spacing()
+            << ", nearest-neighbour spacing min/median/max = " << result.spacing_h.min << " / "
+            << result.spacing_h.median << " / " << result.spacing_h.max << " h, wrote " << options.output << "\n";
+}
+
+}  // namespace
+
+void add_resample_command(CLI::App& app) {
+  auto options = std::make_shared<ResampleOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "resample",
+      "resample a point set with oriented normals once on a grid (unit square/cube, or the input's padded "
+      "bounding box when it lies outside) and write the new points; .ply or .xyz, 2D or 3D");
+  cmd->add_option("input", options->input, "point set to read (.ply or .xyz)")->required();
+  cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
+  CLI::Option* grid = cmd->add_option("--grid", options->resampling.grid, "cells per unit length: h = 1/N")
+                          ->check(CLI::PositiveNumber)
+                          ->capture_default_str();
+  cmd->add_option("--spacing", options->resampling.spacing, "grid spacing h (instead of --grid)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(grid);
+  cmd->add_option("--dim", options->dimension, "read the input as 2D or 3D (default: from the file)")
+      ->check(CLI::IsMember({2, 3}));
+  cmd->add_option("--radius-factor", options->resampling.radius_factor, "influence radius Delta in units of h")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--variant", options->variant, "resampler: exact or interpolated")
+      ->check(CLI::IsMember({"exact", "interpolated"}))
+      ->capture_default_str();
+  cmd->add_option("--threads", options->resampling.threads, "worker threads (results do not depend on it)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->callback([options] {
+    options->resampling.variant = parse_variant(options->variant);
+    // Check the output's extension before any work is done.
+    const PointFileFormat format = format_from_extension(options->output);
+    LoadedPointSet loaded = read_point_set(options->input, options->dimension);
+    for (const std::string& warning : loaded.warnings) std::cerr << "amls: warning: " << warning << "\n";
+    if (loaded.points.empty()) throw std::runtime_error(options->input + ": no points to resample");
+    if (!loaded.has_normals)
+      throw std::runtime_error(options->input +
+                               ": has no normals, and resampling needs oriented normals (normal estimation is "
+                               "not available yet)");
+    if (loaded.dimension == 2) {
+      resample_and_write(to_2d(loaded.points), *options, format);
+    } else {
+      resample_and_write(loaded.points, *options, format);
+    }
+  });
+}
+
+}  // namespace amls::app
