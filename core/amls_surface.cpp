@@ -41,11 +41,14 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   pseudo_normals_.resize(n);
   std::vector<FitStatus> status(n);
   const double inverse_radius = 1.0 / radius_;
+  const bool filter = parameters_.orientation_filter;
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points_.positions[i];
+      const Vec<D>& own = points_.normals[i];
       PrattFit<D> fit;
-      index_.for_each_within(p, radius_, [&](std::uint32_t, const Vec<D>& q) {
+      index_.for_each_within(p, radius_, [&](std::uint32_t id, const Vec<D>& q) {
+        if (filter && points_.normals[id].dot(own) <= 0.0) return;
         const Vec<D> u = (q - p) * inverse_radius;
         fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
       });
@@ -73,14 +76,9 @@ void AmlsSurface<D>::require_ready() const {
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
-  require_ready();
-  const double inverse_r2 = 1.0 / (radius_ * radius_);
-  GradientFit<D> fit;
-  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
-    const Vec<D> d = q - x;
-    fit.add(d, pseudo_normals_[id], weight_of_squared_ratio(d.squaredNorm() * inverse_r2));
-  });
-  return fit.solve(parameters_.min_weight);
+  Neighbourhood<D> neighbourhood;
+  gather(x, radius_, neighbourhood);
+  return evaluate_in(neighbourhood, x);
 }
 
 template <int D>
@@ -96,12 +94,28 @@ void AmlsSurface<D>::gather(const Vec<D>& x, double radius, Neighbourhood<D>& ou
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
-  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  const double r2 = radius_ * radius_;
+  const std::size_t n = neighbourhood.positions.size();
+  // The orientation reference: the pseudo-normal of the point nearest to y.
+  Vec<D> reference = Vec<D>::Zero();
+  if (parameters_.orientation_filter) {
+    double nearest = r2;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d2 = (neighbourhood.positions[k] - y).squaredNorm();
+      if (d2 < nearest) {
+        nearest = d2;
+        reference = neighbourhood.normals[k];
+      }
+    }
+  }
+  const bool filter = parameters_.orientation_filter;
+  const double inverse_r2 = 1.0 / r2;
   GradientFit<D> fit;
-  for (std::size_t k = 0; k < neighbourhood.positions.size(); ++k) {
+  for (std::size_t k = 0; k < n; ++k) {
     const Vec<D> d = neighbourhood.positions[k] - y;
     const double w = weight_of_squared_ratio(d.squaredNorm() * inverse_r2);
-    if (w > 0.0) fit.add(d, neighbourhood.normals[k], w);
+    if (w <= 0.0 || (filter && neighbourhood.normals[k].dot(reference) <= 0.0)) continue;
+    fit.add(d, neighbourhood.normals[k], w);
   }
   return fit.solve(parameters_.min_weight);
 }

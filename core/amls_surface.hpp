@@ -23,6 +23,15 @@ struct AmlsParameters {
   // rim of the support extrapolate from one or two far points and put spurious
   // zero crossings there (tests/test_amls_surface.cpp shows one).
   double min_weight = 0.2;
+  // Where two sheets of the surface come closer than Delta (a thin filament or
+  // a narrow gap), their points carry opposite normals and a fit over both
+  // averages them away, creating spurious zero sets between the sheets. With
+  // this rule, fits use only the neighbours whose normal agrees (positive dot
+  // product) with a reference: the point's own carried normal for the Pratt fit,
+  // the pseudo-normal of the point nearest to x for F. On a surface whose
+  // normals within Delta all agree (curvature radius above Delta / sqrt(2)) it
+  // changes nothing.
+  bool orientation_filter = true;
 };
 
 // Positions and pseudo-normals of the points near a region, copied side by side

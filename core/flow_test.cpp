@@ -72,9 +72,17 @@ void finish(FlowTestReport& report, const RayScan& scan) {
   report.peak_memory_mib = peak_memory_mib();
 }
 
+// The final points carry their pseudo-normals: the best normals the surface has.
+template <int D>
+PointSet<D> final_points_of(const DeformingSurface<D>& surface) {
+  PointSet<D> out = surface.points();
+  if (surface.surface().pseudo_normals().size() == out.size()) out.normals = surface.surface().pseudo_normals();
+  return out;
+}
+
 }  // namespace
 
-FlowTestReport run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress) {
+FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress) {
   validate(config);
   FlowTestReport report;
   report.test = "vortex";
@@ -91,10 +99,10 @@ FlowTestReport run_vortex_test(const FlowTestConfig& config, const FlowProgress&
   const CircleError error = circle_l1_error(surface.surface(), center, radius);
   report.l1_error = error.l1;
   finish(report, error.scan);
-  return report;
+  return {report, final_points_of(surface)};
 }
 
-FlowTestReport run_enright_test(const FlowTestConfig& config, const FlowProgress& progress) {
+FlowTestRun<3> run_enright_test(const FlowTestConfig& config, const FlowProgress& progress) {
   validate(config);
   FlowTestReport report;
   report.test = "enright";
@@ -114,7 +122,7 @@ FlowTestReport run_enright_test(const FlowTestConfig& config, const FlowProgress
   report.symmetric_difference = error.symmetric_difference;
   report.relative_symmetric_difference = error.symmetric_difference / error.exact_volume;
   finish(report, error.scan);
-  return report;
+  return {report, final_points_of(surface)};
 }
 
 }  // namespace amls

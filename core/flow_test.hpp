@@ -49,10 +49,17 @@ struct FlowTestReport {
   double relative_symmetric_difference = 0.0;  // 3D, divided by V0
 };
 
+// The report and the final point set (with its pseudo-normals as normals).
+template <int D>
+struct FlowTestRun {
+  FlowTestReport report;
+  PointSet<D> final_points;
+};
+
 // Called after every step with (steps done, steps planned, time, points).
 using FlowProgress = std::function<void(std::size_t, std::size_t, double, std::size_t)>;
 
-FlowTestReport run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress = {});
-FlowTestReport run_enright_test(const FlowTestConfig& config, const FlowProgress& progress = {});
+FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress = {});
+FlowTestRun<3> run_enright_test(const FlowTestConfig& config, const FlowProgress& progress = {});
 
 }  // namespace amls

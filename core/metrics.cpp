@@ -76,9 +76,14 @@ std::pair<double, double> radial_range(const AmlsSurface<D>& surface, const Vec<
   return {std::max(0.0, lo - surface.radius()), hi + surface.radius()};
 }
 
+// Along a ray from the centre, a closed surface around the centre is crossed
+// an odd number of times; the inside is [0, r1] u [r2, r3] u ... In 2D the
+// paper's test wants one closed curve: exactly one crossing.
+enum class RayRule { exactly_once, odd };
+
 template <int D, typename Direction, typename Accumulate>
-RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size_t rays, Direction&& direction,
-                  Accumulate&& accumulate) {
+RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size_t rays, RayRule rule,
+                  Direction&& direction, Accumulate&& accumulate) {
   RayScan scan;
   scan.rays = rays;
   if (surface.points().empty()) {
@@ -89,21 +94,48 @@ RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size
   }
   const auto [r_lo, r_hi] = radial_range(surface, center);
   const double step = 0.5 * surface.grid().spacing();
-  std::size_t none = 0, several = 0;
+  std::size_t none = 0, wrong = 0;
   for (std::size_t k = 0; k < rays; ++k) {
     const std::vector<double> roots = crossings_along_ray(surface, center, direction(k), r_lo, r_hi, step);
-    if (roots.size() == 1) {
-      accumulate(k, roots.front());
+    const bool good = rule == RayRule::exactly_once ? roots.size() == 1 : roots.size() % 2 == 1;
+    if (good) {
+      accumulate(roots);
     } else {
-      (roots.empty() ? none : several) += 1;
+      (roots.empty() ? none : wrong) += 1;
     }
   }
-  scan.bad_rays = none + several;
+  scan.bad_rays = none + wrong;
   scan.closed = scan.bad_rays == 0;
   if (!scan.closed)
     scan.reason = std::to_string(none) + " of " + std::to_string(rays) + " rays miss the surface and " +
-                  std::to_string(several) + " cross it more than once";
+                  std::to_string(wrong) +
+                  (rule == RayRule::exactly_once ? " cross it more than once" : " cross it an even number of times");
   return scan;
+}
+
+// The integral of r^(D-1) dr over the inside set of a ray ([0, r1] u [r2, r3] u ...),
+// and over its symmetric difference with [0, radius].
+template <int D>
+std::pair<double, double> radial_measures(const std::vector<double>& roots, double radius) {
+  auto primitive = [](double r) { return std::pow(r, D) / D; };
+  double inside = 0.0, difference = 0.0;
+  std::vector<double> breaks{0.0};
+  breaks.insert(breaks.end(), roots.begin(), roots.end());
+  for (std::size_t i = 0; i + 1 < breaks.size(); i += 2) inside += primitive(breaks[i + 1]) - primitive(breaks[i]);
+  // Walk the merged breakpoints; membership flips at each root, and the
+  // sphere's at `radius`.
+  std::vector<std::pair<double, int>> events;
+  for (double r : roots) events.push_back({r, 0});
+  events.push_back({radius, 1});
+  std::sort(events.begin(), events.end());
+  bool in_shape = true, in_sphere = true;
+  double previous = 0.0;
+  for (const auto& [r, which] : events) {
+    if (in_shape != in_sphere) difference += primitive(r) - primitive(previous);
+    (which == 0 ? in_shape : in_sphere) = !(which == 0 ? in_shape : in_sphere);
+    previous = r;
+  }
+  return {inside, difference};
 }
 
 }  // namespace
@@ -116,8 +148,8 @@ CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center,
     return Vec<2>(std::cos(theta), std::sin(theta));
   };
   // Area between the curves in polar form: integral of |r^2 - R^2| / 2 d theta.
-  out.scan = scan_rays<2>(surface, center, rays, direction, [&](std::size_t, double r) {
-    out.l1 += 0.5 * std::abs(r * r - radius * radius) * dtheta;
+  out.scan = scan_rays<2>(surface, center, rays, RayRule::exactly_once, direction, [&](const std::vector<double>& roots) {
+    out.l1 += radial_measures<2>(roots, radius).second * dtheta;
   });
   return out;
 }
@@ -133,13 +165,13 @@ SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& cen
     const double phi = golden_angle * static_cast<double>(k);
     return Vec<3>(s * std::cos(phi), s * std::sin(phi), z);
   };
-  const double r3 = radius * radius * radius;
-  // Volume in spherical form: integral of r^3 / 3 d omega.
-  out.scan = scan_rays<3>(surface, center, rays, direction, [&](std::size_t, double r) {
-    out.volume += r * r * r / 3.0 * solid_angle;
-    out.symmetric_difference += std::abs(r * r * r - r3) / 3.0 * solid_angle;
+  // Volumes in spherical form: integrals of r^2 dr d omega.
+  out.scan = scan_rays<3>(surface, center, rays, RayRule::odd, direction, [&](const std::vector<double>& roots) {
+    const auto [inside, difference] = radial_measures<3>(roots, radius);
+    out.volume += inside * solid_angle;
+    out.symmetric_difference += difference * solid_angle;
   });
-  out.exact_volume = 4.0 / 3.0 * std::numbers::pi * r3;
+  out.exact_volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
   return out;
 }
 

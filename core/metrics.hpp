@@ -18,12 +18,14 @@ struct SpacingStats {
 template <int D>
 SpacingStats spacing_stats(const PointSet<D>& points, double h);
 
-// How the zero set of F meets rays cast from a centre: for a star-shaped
-// closed curve or surface, each ray crosses it exactly once.
+// How the zero set of F meets rays cast from a centre. 2D: one closed curve
+// around the centre is crossed exactly once by every ray (the paper's test is
+// star-shaped at the end). 3D: a closed surface around the centre is crossed an
+// odd number of times by every ray; volumes count the inside segments.
 struct RayScan {
-  bool closed = true;           // every ray crossed exactly once
+  bool closed = true;           // every ray passed the rule above
   std::size_t rays = 0;
-  std::size_t bad_rays = 0;     // rays with no crossing or several
+  std::size_t bad_rays = 0;     // rays that failed it
   std::string reason;           // why it is not closed, if it is not
 };
 
