@@ -30,6 +30,13 @@ void AmlsSurface<D>::set_points(PointSet<D> points) {
 template <int D>
 void AmlsSurface<D>::hash_points() {
   index_.build(points_.positions, grid_.origin(), radius_);
+  // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
+  const std::vector<std::uint32_t>& order = index_.order();
+  PointSet<D> sorted;
+  sorted.reserve(order.size());
+  for (const std::uint32_t id : order) sorted.add(points_.positions[id], points_.normals[id]);
+  points_ = std::move(sorted);
+  index_.renumber_in_cell_order();
   hashed_ = true;
   ready_ = false;
 }
@@ -96,9 +103,11 @@ template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
   const double r2 = radius_ * radius_;
   const std::size_t n = neighbourhood.positions.size();
+  const bool filter = parameters_.orientation_filter;
   // The orientation reference: the pseudo-normal of the point nearest to y.
+  // (Recomputing distances in the second pass is cheaper than storing them.)
   Vec<D> reference = Vec<D>::Zero();
-  if (parameters_.orientation_filter) {
+  if (filter) {
     double nearest = r2;
     for (std::size_t k = 0; k < n; ++k) {
       const double d2 = (neighbourhood.positions[k] - y).squaredNorm();
@@ -108,7 +117,6 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
       }
     }
   }
-  const bool filter = parameters_.orientation_filter;
   const double inverse_r2 = 1.0 / r2;
   GradientFit<D> fit;
   for (std::size_t k = 0; k < n; ++k) {
@@ -118,26 +126,6 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
     fit.add(d, neighbourhood.normals[k], w);
   }
   return fit.solve(parameters_.min_weight);
-}
-
-template <int D>
-void AmlsSurface<D>::evaluate_many(std::span<const Vec<D>> xs, std::span<Evaluation<D>> out) const {
-  require_ready();
-  const Grid<D> groups(grid_.origin(), radius_);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(xs.size());
-  for (std::size_t i = 0; i < xs.size(); ++i) order[i] = {Grid<D>::key(groups.cell_of(xs[i])), static_cast<std::uint32_t>(i)};
-  std::sort(order.begin(), order.end());
-  // Every point within Delta of a group's cell lies within this distance of its centre.
-  const double reach = radius_ * (1.0 + 0.5 * std::sqrt(static_cast<double>(D)));
-  Neighbourhood<D> neighbourhood;
-  for (std::size_t begin = 0; begin < order.size();) {
-    std::size_t end = begin + 1;
-    while (end < order.size() && order[end].first == order[begin].first) ++end;
-    const Vec<D> centre = groups.vertex_position(Grid<D>::unkey(order[begin].first)).array() + 0.5 * radius_;
-    gather(centre, reach, neighbourhood);
-    for (std::size_t k = begin; k < end; ++k) out[order[k].second] = evaluate_in(neighbourhood, xs[order[k].second]);
-    begin = end;
-  }
 }
 
 template class AmlsSurface<2>;

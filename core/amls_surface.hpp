@@ -3,7 +3,6 @@
 // neighbour index, their pseudo-normals (Step 1) and F with its fit gradient
 // (Step 2) at any position.
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "core/gradient_fit.hpp"
@@ -77,10 +76,6 @@ class AmlsSurface {
 
   // F(x) and the fit's gradient, over all points within Delta of x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
-  // F at many positions at once: positions are grouped by cell of side Delta
-  // and each group's neighbours are gathered once.
-  void evaluate_many(std::span<const Vec<D>> xs, std::span<Evaluation<D>> out) const;
-
   // Fills `out` with the points within `radius` (>= Delta) of x; any y within
   // radius - Delta of x can then be evaluated with evaluate_in().
   void gather(const Vec<D>& x, double radius, Neighbourhood<D>& out) const;

@@ -41,6 +41,15 @@ class PointIndex {
     });
   }
 
+  // The index's order: position k of the cell-sorted arrays holds point
+  // order()[k]. A caller that reorders its points by it and then calls
+  // renumber_in_cell_order() gets ids equal to positions in cell order, so
+  // that neighbours are close in memory.
+  const std::vector<std::uint32_t>& order() const { return ids_; }
+  void renumber_in_cell_order() {
+    for (std::uint32_t k = 0; k < ids_.size(); ++k) ids_[k] = k;
+  }
+
   // The ids of the points within `radius` of x, appended to `out`.
   void gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
     for_each_within(x, radius, [&](std::uint32_t id, const Vec<D>&) { out.push_back(id); });

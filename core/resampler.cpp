@@ -1,6 +1,6 @@
 #include "core/resampler.hpp"
 
-#include <span>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/root_finding.hpp"
@@ -9,8 +9,9 @@ namespace amls {
 
 namespace {
 
-constexpr std::uint8_t kVisited = 1;
-constexpr std::uint8_t kHaveClosePoint = 2;
+constexpr std::uint8_t kNeeded = 1;  // the walk reads this vertex: Update_Function evaluates it
+constexpr std::uint8_t kVisited = 2;
+constexpr std::uint8_t kHaveClosePoint = 4;
 
 // Roots are located to this fraction of an edge: near machine precision for
 // coordinates of order one on grids up to a few thousand cells.
@@ -33,55 +34,72 @@ Variant parse_variant(const std::string& name) {
 template <int D>
 void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
   const Grid<D>& grid = surface.grid();
-  slot_of_.clear();
-  keys_.clear();
+  field_.clear();
+  flags_.clear();
+  stats_ = ResampleStats{};
   // The walk reads the corners [I-1, I+3)^D and the far ends of their edges:
   // the box [I-1, I+3]^D less the vertices with two or more coordinates at I+3.
   for (const Vec<D>& p : surface.points().positions) {
-    const IVec<D> cell = grid.cell_of(p);
-    const IVec<D> lo = cell.array() - 1;
-    const IVec<D> hi = cell.array() + 3;
+    const IVec<D> lo = grid.cell_of(p).array() - 1;
+    const IVec<D> hi = lo.array() + 4;
+    const auto block = field_.block(lo);
+    flags_.resize(field_.slots(), 0);
     for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
       if ((v.array() == hi.array()).count() > 1) return;
-      const std::uint64_t key = Grid<D>::key(v);
-      auto [slot, inserted] = slot_of_.try_emplace(key);
-      if (inserted) {
-        *slot = static_cast<std::uint32_t>(keys_.size());
-        keys_.push_back(key);
-      }
+      const std::uint32_t slot = block.slot(v);
+      if (flags_[slot] & kNeeded) return;
+      flags_[slot] |= kNeeded;
+      ++stats_.vertices;
     });
   }
 
-  std::vector<Vec<D>> positions(keys_.size());
-  for (std::size_t s = 0; s < keys_.size(); ++s) positions[s] = grid.vertex_position(Grid<D>::unkey(keys_[s]));
-  values_.resize(keys_.size());
-  pool.parallel_for(keys_.size(), [&](std::size_t begin, std::size_t end, int) {
-    surface.evaluate_many(std::span(positions).subspan(begin, end - begin),
-                          std::span(values_).subspan(begin, end - begin));
+  // Each brick's needed vertices share one gathered neighbourhood.
+  values_.resize(field_.slots());
+  const double h = grid.spacing();
+  const double half_brick = 0.5 * h * static_cast<double>(VertexField<D>::kBrickSide - 1);
+  const double extent = half_brick * std::sqrt(static_cast<double>(D));
+  const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
+  pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int) {
+    std::vector<std::uint32_t> slots;
+    std::vector<Vec<D>> positions;
+    std::vector<Evaluation<D>> evaluations;
+    Neighbourhood<D> neighbourhood;
+    for (std::size_t b = begin; b < end; ++b) {
+      slots.clear();
+      positions.clear();
+      const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
+      for (std::uint32_t s = first; s < first + VertexField<D>::kBrickVolume; ++s) {
+        if (!(flags_[s] & kNeeded)) continue;
+        slots.push_back(s);
+        positions.push_back(grid.vertex_position(field_.vertex_of(s)));
+      }
+      if (slots.empty()) continue;
+      const Vec<D> centre = grid.vertex_position(field_.vertex_of(first)).array() + half_brick;
+      surface.gather(centre, surface.radius() + extent, neighbourhood);
+      for (std::size_t k = 0; k < slots.size(); ++k) values_[slots[k]] = surface.evaluate_in(neighbourhood, positions[k]);
+    }
   });
-
-  stats_ = ResampleStats{};
-  stats_.vertices = keys_.size();
-  for (const auto& v : values_) stats_.undefined_vertices += v.defined ? 0 : 1;
+  for (std::size_t s = 0; s < flags_.size(); ++s) stats_.undefined_vertices += (flags_[s] & kNeeded) && !values_[s].defined;
+  function_updated_ = true;
 }
 
 template <int D>
 const Evaluation<D>* Resampler<D>::vertex_value(const IVec<D>& vertex) const {
-  const std::uint32_t* slot = slot_of_.find(Grid<D>::key(vertex));
-  return slot ? &values_[*slot] : nullptr;
+  const std::optional<std::uint32_t> slot = field_.find(vertex);
+  return slot && (flags_[*slot] & kNeeded) ? &values_[*slot] : nullptr;
 }
 
 template <int D>
 void Resampler<D>::list_crossings(const AmlsSurface<D>& surface) {
   const Grid<D>& grid = surface.grid();
-  flags_.assign(keys_.size(), 0);
+  for (auto& f : flags_) f &= kNeeded;
   crossings_.clear();
   for (const Vec<D>& p : surface.points().positions) {
-    const IVec<D> cell = grid.cell_of(p);
-    const IVec<D> lo = cell.array() - 1;
-    const IVec<D> hi = cell.array() + 2;
+    const IVec<D> lo = grid.cell_of(p).array() - 1;
+    const IVec<D> hi = lo.array() + 3;
+    const auto block = field_.block(lo);
     for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& corner) {
-      const std::uint32_t from = *slot_of_.find(Grid<D>::key(corner));
+      const std::uint32_t from = block.slot(corner);
       if (flags_[from] & kVisited) return;
       flags_[from] |= kVisited;
       const Evaluation<D>& f0 = values_[from];
@@ -89,7 +107,7 @@ void Resampler<D>::list_crossings(const AmlsSurface<D>& surface) {
       for (int axis = 0; axis < D; ++axis) {
         IVec<D> end = corner;
         ++end[axis];
-        const std::uint32_t to = *slot_of_.find(Grid<D>::key(end));
+        const std::uint32_t to = block.slot(end);
         const Evaluation<D>& f1 = values_[to];
         if (f1.defined && is_positive(f0.value) != is_positive(f1.value)) crossings_.push_back({from, to, axis});
       }
@@ -116,23 +134,29 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
       Vec<D> normal = (1.0 - linear_t) * f0.gradient + linear_t * f1.gradient;
 
       if (variant == Variant::exact) {
-        const Vec<D> start = grid.vertex_position(Grid<D>::unkey(keys_[x.from]));
+        const Vec<D> start = grid.vertex_position(field_.vertex_of(x.from));
         Vec<D> direction = Vec<D>::Zero();
         direction[x.axis] = h;
         // Every point that can reach the edge, gathered once for all iterations.
         surface.gather(start + 0.5 * direction, surface.radius() + 0.5 * h, candidates);
+        // The evaluation with the smallest |F| so far: the root's, at the end.
+        double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
+        Evaluation<D> best = best_t == 0.0 ? f0 : f1;
         const RootResult root = find_root_illinois(
             [&](double t) -> std::optional<double> {
               const Evaluation<D> e = surface.evaluate_in(candidates, start + t * direction);
               if (!e.defined) return std::nullopt;
+              if (std::abs(e.value) < std::abs(best.value)) {
+                best = e;
+                best_t = t;
+              }
               return e.value;
             },
-            0.0, 1.0, f0.value, f1.value, kRootTolerance);
+            0.0, 1.0, f0.value, f1.value, kRootTolerance, kRootTolerance * (std::abs(f0.value) + std::abs(f1.value)));
         evaluations[static_cast<std::size_t>(block)] += static_cast<std::size_t>(root.evaluations);
         if (root.ok) {
           x.t = root.t;
-          const Evaluation<D> at_root = surface.evaluate_in(candidates, start + root.t * direction);
-          if (at_root.defined && at_root.gradient.squaredNorm() > 0.0) normal = at_root.gradient;
+          if (root.t == best_t && best.gradient.squaredNorm() > 0.0) normal = best.gradient;
         } else {
           ++fallbacks[static_cast<std::size_t>(block)];
         }
@@ -149,8 +173,8 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
 
 template <int D>
 PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool) {
-  if (values_.empty() && !surface.points().empty())
-    throw std::logic_error("Resampler::resample() called before update_function()");
+  if (!function_updated_) throw std::logic_error("Resampler::resample() called before update_function()");
+  function_updated_ = false;
   list_crossings(surface);
   locate_crossings(surface, variant, pool);
 
@@ -164,7 +188,7 @@ PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant varian
     const std::uint32_t nearer = x.t < 0.5 ? x.from : x.to;
     if (flags_[nearer] & kHaveClosePoint) continue;
     flags_[nearer] |= kHaveClosePoint;
-    Vec<D> q = grid.vertex_position(Grid<D>::unkey(keys_[x.from]));
+    Vec<D> q = grid.vertex_position(field_.vertex_of(x.from));
     q[x.axis] += x.t * h;
     out.add(q, x.normal);
   }

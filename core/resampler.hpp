@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/amls_surface.hpp"
-#include "core/flat_hash_map.hpp"
+#include "core/vertex_field.hpp"
 
 namespace amls {
 
@@ -47,7 +47,7 @@ class Resampler {
  public:
   // Update_Function().
   void update_function(const AmlsSurface<D>& surface, ThreadPool& pool);
-  // Resample(); requires update_function() on the same surface first.
+  // Resample(); requires update_function() on the same surface first, once per resample.
   PointSet<D> resample(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
   const ResampleStats& stats() const { return stats_; }
@@ -67,12 +67,12 @@ class Resampler {
   void list_crossings(const AmlsSurface<D>& surface);
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
-  FlatHashMap<std::uint32_t> slot_of_;  // vertex key -> slot
-  std::vector<std::uint64_t> keys_;     // slot -> vertex key
-  std::vector<Evaluation<D>> values_;   // slot -> F
-  std::vector<std::uint8_t> flags_;     // slot -> VISITED | HAVECLOSEPOINT
+  VertexField<D> field_;                // vertex <-> slot
+  std::vector<Evaluation<D>> values_;   // slot -> F (valid where needed)
+  std::vector<std::uint8_t> flags_;     // slot -> NEEDED | VISITED | HAVECLOSEPOINT
   std::vector<Crossing> crossings_;
   ResampleStats stats_;
+  bool function_updated_ = false;
 };
 
 extern template class Resampler<2>;

@@ -15,10 +15,11 @@ struct RootResult {
 
 // g(t) returns std::optional<double> (nullopt where undefined). Requires
 // g(a) = ga and g(b) = gb of opposite signs (a zero counts as positive, as in
-// the resampler); stops when the bracket is narrower than `tolerance`.
+// the resampler); stops when the bracket is narrower than `tolerance` or |g|
+// falls to `value_tolerance`. Returns the bracket end where |g| is smallest.
 template <typename G>
 RootResult find_root_illinois(G&& g, double a, double b, double ga, double gb, double tolerance,
-                              int max_evaluations = 100) {
+                              double value_tolerance = 0.0, int max_evaluations = 100) {
   RootResult r;
   if (ga == 0.0) return {true, a, 0};
   if (gb == 0.0) return {true, b, 0};
@@ -29,7 +30,7 @@ RootResult find_root_illinois(G&& g, double a, double b, double ga, double gb, d
     const std::optional<double> gt = g(t);
     ++r.evaluations;
     if (!gt) return r;
-    if (*gt == 0.0) return {true, t, r.evaluations};
+    if (std::abs(*gt) <= value_tolerance || *gt == 0.0) return {true, t, r.evaluations};
     if ((*gt > 0.0) == (gb > 0.0)) {
       b = t;
       gb = *gt;

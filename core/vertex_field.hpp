@@ -1,0 +1,97 @@
+#pragma once
+// Sparse storage for per-vertex data near the surface (Update_Function's
+// values and the walk's flags). Vertices live in bricks of 4^D; a sparse map
+// takes a brick to its index, so memory follows the surface, never the grid's
+// volume, and a point's whole neighbourhood of vertices (5 per axis) resolves
+// with at most 2^D map lookups instead of one per vertex.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/flat_hash_map.hpp"
+#include "core/grid.hpp"
+
+namespace amls {
+
+template <int D>
+class VertexField {
+ public:
+  static constexpr int kBrickShift = 2;
+  static constexpr std::int64_t kBrickSide = std::int64_t{1} << kBrickShift;
+  static constexpr std::uint32_t kBrickVolume = D == 2 ? 16 : 64;
+
+  // The bricks around one box of vertices [lo, lo + 4]^D: vertices in it map
+  // to slots by arithmetic alone.
+  class Block {
+   public:
+    std::uint32_t slot(const IVec<D>& v) const {
+      int brick = 0;
+      std::uint32_t local = 0;
+      for (int a = D - 1; a >= 0; --a) {
+        brick = brick * 2 + static_cast<int>((v[a] >> kBrickShift) - base_[a]);
+        local = local * static_cast<std::uint32_t>(kBrickSide) + static_cast<std::uint32_t>(v[a] & (kBrickSide - 1));
+      }
+      return bricks_[static_cast<std::size_t>(brick)] * kBrickVolume + local;
+    }
+
+   private:
+    friend class VertexField;
+    IVec<D> base_;                             // brick coordinates of the box's lowest corner
+    std::array<std::uint32_t, 1 << D> bricks_;  // brick index by offset (0 or 1 per axis)
+  };
+
+  void clear() {
+    brick_of_.clear();
+    brick_origin_.clear();
+  }
+
+  // The block for the vertex box [lo, lo + 4]^D, creating its bricks if needed.
+  Block block(const IVec<D>& lo) {
+    Block b;
+    for (int a = 0; a < D; ++a) b.base_[a] = lo[a] >> kBrickShift;
+    for (int k = 0; k < (1 << D); ++k) {
+      IVec<D> brick = b.base_;
+      for (int a = 0; a < D; ++a) brick[a] += (k >> a) & 1;
+      auto [index, inserted] = brick_of_.try_emplace(Grid<D>::key(brick));
+      if (inserted) {
+        *index = static_cast<std::uint32_t>(brick_origin_.size());
+        brick_origin_.push_back(brick * kBrickSide);
+      }
+      b.bricks_[static_cast<std::size_t>(k)] = *index;
+    }
+    return b;
+  }
+
+  // The slot of a vertex, if its brick exists.
+  std::optional<std::uint32_t> find(const IVec<D>& v) const {
+    IVec<D> brick;
+    std::uint32_t local = 0;
+    for (int a = D - 1; a >= 0; --a) {
+      brick[a] = v[a] >> kBrickShift;
+      local = local * static_cast<std::uint32_t>(kBrickSide) + static_cast<std::uint32_t>(v[a] & (kBrickSide - 1));
+    }
+    const std::uint32_t* index = brick_of_.find(Grid<D>::key(brick));
+    if (!index) return std::nullopt;
+    return *index * kBrickVolume + local;
+  }
+
+  // Slots in use: every vertex of every brick, [0, slots()).
+  std::size_t slots() const { return brick_origin_.size() * kBrickVolume; }
+
+  IVec<D> vertex_of(std::uint32_t slot) const {
+    IVec<D> v = brick_origin_[slot / kBrickVolume];
+    std::uint32_t local = slot % kBrickVolume;
+    for (int a = 0; a < D; ++a) {
+      v[a] += local % static_cast<std::uint32_t>(kBrickSide);
+      local /= static_cast<std::uint32_t>(kBrickSide);
+    }
+    return v;
+  }
+
+ private:
+  FlatHashMap<std::uint32_t> brick_of_;
+  std::vector<IVec<D>> brick_origin_;  // lowest vertex of each brick
+};
+
+}  // namespace amls
