@@ -83,20 +83,47 @@ void AmlsSurface<D>::require_ready() const {
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
-  Neighbourhood<D> neighbourhood;
-  gather(x, radius_, neighbourhood);
-  return evaluate_in(neighbourhood, x);
+  require_ready();
+  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  // Two passes over the index, as in evaluate_in(): the orientation reference, then the fit.
+  Vec<D> reference = Vec<D>::Zero();
+  double nearest = radius_ * radius_;
+  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
+    const double d2 = (q - x).squaredNorm();
+    if (d2 < nearest) {
+      nearest = d2;
+      reference = pseudo_normals_[id];
+    }
+  });
+  const bool filter = parameters_.orientation_filter;
+  GradientFit<D> fit;
+  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
+    const Vec<D> d = q - x;
+    const double w = weight_of_squared_ratio(d.squaredNorm() * inverse_r2);
+    if (w <= 0.0 || (filter && pseudo_normals_[id].dot(reference) <= 0.0)) return;
+    fit.add(d, pseudo_normals_[id], w);
+  });
+  return fit.solve(parameters_.min_weight);
 }
 
 template <int D>
-void AmlsSurface<D>::gather(const Vec<D>& x, double radius, Neighbourhood<D>& out) const {
+void AmlsSurface<D>::gather_ids(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
   require_ready();
+  index_.gather(x, radius, out);
+}
+
+template <int D>
+void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
+                            Neighbourhood<D>& out) const {
   out.positions.clear();
   out.normals.clear();
-  index_.for_each_within(x, radius, [&](std::uint32_t id, const Vec<D>& q) {
+  const double r2 = radius * radius;
+  for (const std::uint32_t id : ids) {
+    const Vec<D>& q = points_.positions[id];
+    if ((q - x).squaredNorm() > r2) continue;
     out.positions.push_back(q);
     out.normals.push_back(pseudo_normals_[id]);
-  });
+  }
 }
 
 template <int D>

@@ -3,6 +3,7 @@
 // neighbour index, their pseudo-normals (Step 1) and F with its fit gradient
 // (Step 2) at any position.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/gradient_fit.hpp"
@@ -76,9 +77,11 @@ class AmlsSurface {
 
   // F(x) and the fit's gradient, over all points within Delta of x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
-  // Fills `out` with the points within `radius` (>= Delta) of x; any y within
-  // radius - Delta of x can then be evaluated with evaluate_in().
-  void gather(const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
+
+  // Appends the ids of the points within `radius` of x.
+  void gather_ids(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const;
+  // Fills `out` with those of the points `ids` that lie within `radius` of x.
+  void select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
   // F at y from a neighbourhood holding every point within Delta of y.
   Evaluation<D> evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
 

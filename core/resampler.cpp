@@ -1,6 +1,7 @@
 #include "core/resampler.hpp"
 
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 #include "core/root_finding.hpp"
@@ -53,30 +54,31 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
     });
   }
 
-  // Each brick's needed vertices share one gathered neighbourhood.
+  // One gather per brick serves its vertices here and, in locate_crossings(),
+  // the root finding on every edge that starts in it: it holds every point
+  // within Delta of the brick's box of edges, [origin, origin + 4h]^D.
   values_.resize(field_.slots());
   const double h = grid.spacing();
-  const double half_brick = 0.5 * h * static_cast<double>(VertexField<D>::kBrickSide - 1);
-  const double extent = half_brick * std::sqrt(static_cast<double>(D));
+  const double half_box = 0.5 * h * static_cast<double>(VertexField<D>::kBrickSide);
+  const double reach = surface.radius() + half_box * std::sqrt(static_cast<double>(D));
   const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
-  pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int) {
-    std::vector<std::uint32_t> slots;
-    std::vector<Vec<D>> positions;
-    std::vector<Evaluation<D>> evaluations;
+  brick_points_.assign(static_cast<std::size_t>(pool.threads()), {});
+  brick_range_.assign(bricks, {});
+  pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int block) {
+    std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(block)];
     Neighbourhood<D> neighbourhood;
     for (std::size_t b = begin; b < end; ++b) {
-      slots.clear();
-      positions.clear();
       const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
+      const Vec<D> centre = grid.vertex_position(field_.vertex_of(first)).array() + half_box;
+      BrickPoints& range = brick_range_[b];
+      range.block = block;
+      range.begin = static_cast<std::uint32_t>(ids.size());
+      surface.gather_ids(centre, reach, ids);
+      range.end = static_cast<std::uint32_t>(ids.size());
+      surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), centre, reach, neighbourhood);
       for (std::uint32_t s = first; s < first + VertexField<D>::kBrickVolume; ++s) {
-        if (!(flags_[s] & kNeeded)) continue;
-        slots.push_back(s);
-        positions.push_back(grid.vertex_position(field_.vertex_of(s)));
+        if (flags_[s] & kNeeded) values_[s] = surface.evaluate_in(neighbourhood, grid.vertex_position(field_.vertex_of(s)));
       }
-      if (slots.empty()) continue;
-      const Vec<D> centre = grid.vertex_position(field_.vertex_of(first)).array() + half_brick;
-      surface.gather(centre, surface.radius() + extent, neighbourhood);
-      for (std::size_t k = 0; k < slots.size(); ++k) values_[slots[k]] = surface.evaluate_in(neighbourhood, positions[k]);
     }
   });
   for (std::size_t s = 0; s < flags_.size(); ++s) stats_.undefined_vertices += (flags_[s] & kNeeded) && !values_[s].defined;
@@ -137,8 +139,12 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         const Vec<D> start = grid.vertex_position(field_.vertex_of(x.from));
         Vec<D> direction = Vec<D>::Zero();
         direction[x.axis] = h;
-        // Every point that can reach the edge, gathered once for all iterations.
-        surface.gather(start + 0.5 * direction, surface.radius() + 0.5 * h, candidates);
+        // Every point that can reach the edge, taken once for all iterations
+        // from the points gathered for the edge's brick.
+        const BrickPoints& range = brick_range_[x.from / VertexField<D>::kBrickVolume];
+        const std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(range.block)];
+        surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), start + 0.5 * direction,
+                       surface.radius() + 0.5 * h, candidates);
         // The evaluation with the smallest |F| so far: the root's, at the end.
         double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
         Evaluation<D> best = best_t == 0.0 ? f0 : f1;

@@ -67,7 +67,16 @@ class Resampler {
   void list_crossings(const AmlsSurface<D>& surface);
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
+  // The points gathered around one brick: brick_points_[block][begin, end).
+  struct BrickPoints {
+    int block = 0;
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+  };
+
   VertexField<D> field_;                // vertex <-> slot
+  std::vector<std::vector<std::uint32_t>> brick_points_;  // per thread block: point ids
+  std::vector<BrickPoints> brick_range_;                   // per brick
   std::vector<Evaluation<D>> values_;   // slot -> F (valid where needed)
   std::vector<std::uint8_t> flags_;     // slot -> NEEDED | VISITED | HAVECLOSEPOINT
   std::vector<Crossing> crossings_;
