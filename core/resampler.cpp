@@ -61,6 +61,7 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   const double h = grid.spacing();
   const double half_box = 0.5 * h * static_cast<double>(VertexField<D>::kBrickSide);
   const double reach = surface.radius() + half_box * std::sqrt(static_cast<double>(D));
+  const double cube_reach = surface.radius() + 0.5 * h * std::sqrt(static_cast<double>(D));
   const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
   brick_points_.assign(static_cast<std::size_t>(pool.threads()), {});
   brick_range_.assign(bricks, {});
@@ -75,10 +76,25 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       range.begin = static_cast<std::uint32_t>(ids.size());
       surface.gather_ids(centre, reach, ids);
       range.end = static_cast<std::uint32_t>(ids.size());
-      surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), centre, reach, neighbourhood);
-      for (std::uint32_t s = first; s < first + VertexField<D>::kBrickVolume; ++s) {
-        if (flags_[s] & kNeeded) values_[s] = surface.evaluate_in(neighbourhood, grid.vertex_position(field_.vertex_of(s)));
-      }
+      // Vertices are evaluated by cubes of 2^D, each from the brick's points
+      // within reach of that cube, so that few candidates are wasted.
+      const std::span<const std::uint32_t> brick_ids(ids.data() + range.begin, range.end - range.begin);
+      const IVec<D> brick_origin = field_.vertex_of(first);
+      for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Ones(), [&](const IVec<D>& cube) {
+        const IVec<D> lo = 2 * cube;
+        const IVec<D> hi = lo.array() + 1;
+        bool needed = false;
+        for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& offset) {
+          needed = needed || (flags_[VertexField<D>::slot_in_brick(first, offset)] & kNeeded);
+        });
+        if (!needed) return;
+        const Vec<D> cube_centre = grid.vertex_position(brick_origin + lo).array() + 0.5 * h;
+        surface.select(brick_ids, cube_centre, cube_reach, neighbourhood);
+        for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& offset) {
+          const std::uint32_t s = VertexField<D>::slot_in_brick(first, offset);
+          if (flags_[s] & kNeeded) values_[s] = surface.evaluate_in(neighbourhood, grid.vertex_position(brick_origin + offset));
+        });
+      });
     }
   });
   for (std::size_t s = 0; s < flags_.size(); ++s) stats_.undefined_vertices += (flags_[s] & kNeeded) && !values_[s].defined;

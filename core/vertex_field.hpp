@@ -76,6 +76,14 @@ class VertexField {
     return *index * kBrickVolume + local;
   }
 
+  // The slot of the vertex at `offset` (each coordinate in [0, 4)) from the
+  // lowest vertex of the brick whose first slot is `first`.
+  static std::uint32_t slot_in_brick(std::uint32_t first, const IVec<D>& offset) {
+    std::uint32_t local = 0;
+    for (int a = D - 1; a >= 0; --a) local = local * static_cast<std::uint32_t>(kBrickSide) + static_cast<std::uint32_t>(offset[a]);
+    return first + local;
+  }
+
   // Slots in use: every vertex of every brick, [0, slots()).
   std::size_t slots() const { return brick_origin_.size() * kBrickVolume; }
 
