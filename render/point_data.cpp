@@ -1,0 +1,126 @@
+#include "render/point_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "core/point_index.hpp"
+
+namespace amls {
+
+namespace {
+
+template <int D>
+glm::vec3 to_vec3(const Vec<D>& v) {
+  if constexpr (D == 2)
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), 0.0f};
+  else
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+template <int D>
+double estimate_spacing(const std::vector<Vec<D>>& positions) {
+  const std::size_t n = positions.size();
+  if (n < 2) return 0.0;
+  Vec<D> lo = positions.front(), hi = positions.front();
+  for (const Vec<D>& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vec<D> extent = hi - lo;
+  const double diagonal = extent.norm();
+  if (!(diagonal > 0.0)) return 0.0;
+  // The index's cell size only needs to be near the spacing: guess it as if the points
+  // evenly filled a curve (2D) or surface (3D) as large as their bounding box.
+  const double count = static_cast<double>(n);
+  double guess = 0.0;
+  if constexpr (D == 2)
+    guess = extent.sum() / count;
+  else
+    guess = std::sqrt((extent[0] * extent[1] + extent[1] * extent[2] + extent[2] * extent[0]) / count);
+  // A set thinner than assumed (a 3D curve, all points on a line) would make the guess
+  // tiny and a query visit (radius / cell)^D empty cells: diagonal / sqrt(n) bounds that,
+  // at worst ~sqrt(n) points per cell.
+  guess = std::max(guess, diagonal / std::sqrt(count));
+  PointIndex<D> index;
+  index.build(positions, lo, guess);
+
+  const std::size_t samples = std::min<std::size_t>(n, 4096);
+  std::vector<double> nearest;
+  nearest.reserve(samples);
+  for (std::size_t s = 0; s < samples; ++s) {
+    const std::size_t i = s * n / samples;
+    const Vec<D>& p = positions[i];
+    double best2 = std::numeric_limits<double>::infinity();
+    for (double radius = guess; !std::isfinite(best2) && radius < 4.0 * diagonal; radius *= 2.0)
+      index.for_each_within(p, radius, [&](std::uint32_t id, const Vec<D>& q) {
+        if (id != i) best2 = std::min(best2, (q - p).squaredNorm());
+      });
+    if (std::isfinite(best2)) nearest.push_back(std::sqrt(best2));
+  }
+  if (nearest.empty()) return 0.0;
+  auto middle = nearest.begin() + static_cast<std::ptrdiff_t>(nearest.size() / 2);
+  std::nth_element(nearest.begin(), middle, nearest.end());
+  return *middle;
+}
+
+template <int D>
+PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing) {
+  if (points.normals.size() != points.positions.size())
+    throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
+                                std::to_string(points.normals.size()) + " normals");
+  if (points.size() > std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument("point set too large to draw: " + std::to_string(points.size()) + " points");
+  if (spacing && !(*spacing > 0.0 && std::isfinite(*spacing)))
+    throw std::invalid_argument("point spacing must be a positive finite number, got " + std::to_string(*spacing));
+
+  PreparedPoints out;
+  out.dimension = D;
+  out.input_count = points.size();
+  out.positions.reserve(points.size());
+  out.normals.reserve(points.size());
+  std::vector<std::uint32_t> kept;
+  kept.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3 p = to_vec3<D>(points.positions[i]);
+    const glm::vec3 n = to_vec3<D>(points.normals[i]);
+    const float length = glm::length(n);
+    if (!finite(p) || !finite(n) || !(length > 0.0f) || !std::isfinite(length)) continue;
+    out.positions.push_back(p);
+    out.normals.push_back(n / length);
+    kept.push_back(static_cast<std::uint32_t>(i));
+  }
+  out.skipped = points.size() - kept.size();
+  if (out.skipped > 0) out.source_index = std::move(kept);
+
+  if (spacing) {
+    out.spacing = *spacing;
+  } else if (out.skipped == 0) {
+    out.spacing = estimate_spacing<D>(points.positions);
+  } else {
+    std::vector<Vec<D>> drawable;  // the index rejects non-finite positions
+    drawable.reserve(out.source_index.size());
+    for (std::uint32_t i : out.source_index) drawable.push_back(points.positions[i]);
+    out.spacing = estimate_spacing<D>(drawable);
+  }
+  out.bounds = bounding_sphere(out.positions);
+  if (!(out.spacing > 0.0)) {
+    // Fewer than two distinct points: no spacing to measure; take a size that shows them.
+    out.spacing = out.bounds.radius > 0.0f ? out.bounds.radius / 16.0 : 1.0;
+  }
+  if (!out.bounds.empty()) out.bounds.radius += static_cast<float>(out.spacing);
+  return out;
+}
+
+template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>);
+template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>);
+template double estimate_spacing<2>(const std::vector<Vec<2>>&);
+template double estimate_spacing<3>(const std::vector<Vec<3>>&);
+
+}  // namespace amls

@@ -1,0 +1,41 @@
+#pragma once
+// CPU side of a point upload: the checks, the float conversion and the numbers
+// (spacing, bounds) computed once per point set, never per frame. No GL here.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/point_set.hpp"
+#include "render/camera.hpp"
+
+namespace amls {
+
+struct PreparedPoints {
+  int dimension = 3;
+  // The drawable points as floats (2D sets get z = 0); normals are unit length.
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  // The input index of each drawable point; empty when every point was drawable.
+  std::vector<std::uint32_t> source_index;
+  std::size_t input_count = 0;
+  std::size_t skipped = 0;  // points with a non-finite position or a non-finite or zero normal
+  double spacing = 0.0;     // as given, else estimated (estimate_spacing)
+  BoundingSphere bounds;    // of the drawable points, widened by the spacing (a splat's overhang)
+
+  std::size_t size() const { return positions.size(); }
+};
+
+// Checks and converts a point set. `spacing` is the sampling spacing (h) if known;
+// otherwise it is estimated from the points. Throws std::invalid_argument if positions
+// and normals differ in number, the set is too large for 32-bit indices, or `spacing`
+// is given but not a positive finite number. Undrawable points are skipped and counted.
+template <int D>
+PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing);
+
+// The median distance from a point to its nearest neighbour, over an evenly strided
+// subset of at most 4096 points (exact for smaller sets). All positions must be finite.
+// Returns 0 if there are fewer than two distinct positions.
+template <int D>
+double estimate_spacing(const std::vector<Vec<D>>& positions);
+
+}  // namespace amls
