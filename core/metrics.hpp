@@ -18,6 +18,18 @@ struct SpacingStats {
 template <int D>
 SpacingStats spacing_stats(const PointSet<D>& points, double h);
 
+// Distances from each point of one set to the nearest point of another, in units of h.
+struct DistanceStats {
+  double mean = 0.0;
+  double max = 0.0;
+  std::size_t count = 0;  // points measured
+};
+
+// From every position in `from` to its nearest position in `to` (which must
+// not be empty unless `from` is).
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h);
+
 // How the zero set of F meets rays cast from a centre: for a star-shaped
 // closed curve or surface, each ray crosses it exactly once.
 struct RayScan {
