@@ -43,6 +43,12 @@ nlohmann::json to_json(const SceneRunReport& r) {
   j["points_max"] = r.points_max;
   j["spacing_h"] = spacing_json(r.spacing_h);
   j["spacing_frames"] = r.frames_measured;
+  j["spacing_outside"] = {{"points", r.spacing_points},
+                          {"below_0.3h", r.spacing_below},
+                          {"above_1.5h", r.spacing_above},
+                          {"fraction", r.spacing_points > 0 ? static_cast<double>(r.spacing_below + r.spacing_above) /
+                                                                  static_cast<double>(r.spacing_points)
+                                                            : 0.0}};
   j["tracers"] = r.tracers;
   j["probes"] = r.probes;
   j["distance_to_exact_h"] = {{"mean", r.distance_to_exact_h.mean}, {"max", r.distance_to_exact_h.max}};
@@ -62,6 +68,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
                            {"stage", s.stage},
                            {"points", s.points},
                            {"spacing_h", spacing_json(s.spacing_h)},
+                           {"spacing_below_0.3h", s.spacing_below},
+                           {"spacing_above_1.5h", s.spacing_above},
                            {"failed_normal_fits", s.failed_normal_fits},
                            {"timings_s", timings_json(s.timings)}};
     if (s.probed) step["probe"] = {{"holes", s.holes}, {"max_h", s.probe_max_h}};
@@ -82,6 +90,12 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
                 r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured, r.spacing_h.min,
                 r.spacing_h.median, r.spacing_h.max);
   out << line;
+  std::snprintf(line, sizeof line, "spacing outside [0.3 h, 1.5 h]: %zu below, %zu above, of %zu measured (%.3f %%)\n",
+                r.spacing_below, r.spacing_above, r.spacing_points,
+                r.spacing_points > 0 ? 100.0 * static_cast<double>(r.spacing_below + r.spacing_above) /
+                                           static_cast<double>(r.spacing_points)
+                                     : 0.0);
+  out << line;
   std::snprintf(line, sizeof line,
                 "exact shape (%zu tracers): final points to it mean %.4f h, max %.4f h; it to the points mean %.4f h, max %.4f h\n",
                 r.tracers, r.distance_to_exact_h.mean, r.distance_to_exact_h.max, r.exact_to_points_h.mean,
@@ -93,6 +107,11 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
                 r.timings.normals, r.timings.function, r.timings.resample, r.timings.deform, r.timings.hash,
                 r.timings.total(), r.tracer_seconds, r.measure_seconds, r.wall_seconds);
   out << line;
+  if (r.final_holes > 0) {
+    std::snprintf(line, sizeof line, "final surface: F undefined at %zu of %zu probes of the exact shape\n",
+                  r.final_holes, r.probes);
+    out << line;
+  }
   out << "status: " << (r.broken ? "broken (" + r.status_reason + ")" : std::string("ok")) << "\n";
 }
 

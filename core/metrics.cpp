@@ -28,19 +28,29 @@ double nearest_squared(const PointIndex<D>& index, const Vec<D>& p, double radiu
 }  // namespace
 
 template <int D>
-SpacingStats spacing_stats(const PointSet<D>& points, double h) {
-  SpacingStats s;
-  if (points.size() < 2) return s;
+std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h) {
+  if (points.size() < 2) return {};
   PointIndex<D> index;
   index.build(points.positions, Vec<D>::Zero(), 2.0 * h);
   std::vector<double> nearest(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     nearest[i] = std::sqrt(nearest_squared(index, points.positions[i], 2.0 * h, static_cast<std::uint32_t>(i))) / h;
   std::sort(nearest.begin(), nearest.end());
-  s.min = nearest.front();
-  s.max = nearest.back();
-  s.median = nearest[nearest.size() / 2];
+  return nearest;
+}
+
+SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings) {
+  SpacingStats s;
+  if (sorted_spacings.empty()) return s;
+  s.min = sorted_spacings.front();
+  s.max = sorted_spacings.back();
+  s.median = sorted_spacings[sorted_spacings.size() / 2];
   return s;
+}
+
+template <int D>
+SpacingStats spacing_stats(const PointSet<D>& points, double h) {
+  return spacing_stats_of(nearest_neighbour_spacings(points, h));
 }
 
 template <int D>
@@ -64,6 +74,8 @@ DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std:
 
 template SpacingStats spacing_stats<2>(const PointSet<2>&, double);
 template SpacingStats spacing_stats<3>(const PointSet<3>&, double);
+template std::vector<double> nearest_neighbour_spacings<2>(const PointSet<2>&, double);
+template std::vector<double> nearest_neighbour_spacings<3>(const PointSet<3>&, double);
 template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
 template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
 

@@ -3,6 +3,7 @@
 // surface of a point set.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/amls_surface.hpp"
 
@@ -17,6 +18,10 @@ struct SpacingStats {
 
 template <int D>
 SpacingStats spacing_stats(const PointSet<D>& points, double h);
+// Every point's nearest-neighbour distance in units of h, sorted (empty for fewer than 2 points).
+template <int D>
+std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h);
+SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
 
 // Distances from each point of one set to the nearest point of another, in units of h.
 struct DistanceStats {

@@ -181,7 +181,13 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
     const PointSet<D>& points = surface.points();
     record.step = step;
     record.points = points.size();
-    record.spacing_h = spacing_stats(points, report.h);
+    const std::vector<double> spacings = nearest_neighbour_spacings(points, report.h);
+    record.spacing_h = spacing_stats_of(spacings);
+    record.spacing_below = static_cast<std::size_t>(std::lower_bound(spacings.begin(), spacings.end(), 0.3) - spacings.begin());
+    record.spacing_above = static_cast<std::size_t>(spacings.end() - std::upper_bound(spacings.begin(), spacings.end(), 1.5));
+    report.spacing_points += spacings.size();
+    report.spacing_below += record.spacing_below;
+    report.spacing_above += record.spacing_above;
     if (points.size() >= 2) {
       report.spacing_h.min = report.frames_measured == 0 ? record.spacing_h.min
                                                          : std::min(report.spacing_h.min, record.spacing_h.min);
@@ -270,7 +276,7 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
     report.distance_to_exact_h = nearest_distance_stats(surface.points().positions, tracers.positions, report.h);
     report.exact_to_points_h = nearest_distance_stats(tracers.positions, surface.points().positions, report.h);
   }
-  if (report.final_holes > 0)
+  if (report.final_holes > 0 && !options.resample)
     mark_broken(report.steps, "the final surface does not cover the exact shape: F is undefined at " +
                                   std::to_string(report.final_holes) + " of " + std::to_string(report.probes) +
                                   " probes");

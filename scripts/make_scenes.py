@@ -143,9 +143,136 @@ def clover2d():
     }
 
 
+def spherical(r, azimuth, latitude):
+    a, b = math.radians(azimuth), math.radians(latitude)
+    return [r * math.cos(b) * math.cos(a), r * math.cos(b) * math.sin(a), r * math.sin(b)]
+
+
+def on_equator(points2d, z=0.0):
+    return [[p[0], p[1], z] for p in points2d]
+
+
+def clover3d():
+    """The 2D clover's handles on the equator of a unit sphere, with handles
+    off the equator that flatten the leaves to slabs 0.6 thick and make the
+    stem round. One stage, three targets: the stem first (40 steps), then the
+    leaves (two targets of 40 steps)."""
+    start, final = [], []
+    # Equator: leaf tips and shoulders, and notches at 0, 90, 180 degrees.
+    start += on_equator(clover_start()[:15])
+    final += on_equator(clover_final()[:15])
+    # Off the equator: above and below each leaf's centre, each notch, and the poles.
+    for material, tip in zip(MATERIAL_TIPS, LEAF_TIPS):
+        for lat in (-40, 40):
+            start.append(spherical(1.0, material, lat))
+            final.append(spherical(0.95, tip, 0)[:2] + [0.3 if lat > 0 else -0.3])
+    for notch in (0, 90, 180):
+        for lat in (-45, 45):
+            start.append(spherical(1.0, notch, lat))
+            final.append(spherical(0.25, notch, 0)[:2] + [0.3 if lat > 0 else -0.3])
+    start += [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]
+    final += [[0.0, 0.0, 0.35], [0.0, 0.0, -0.35]]
+    # The stem: rings of four handles at 9 degrees (its base) and 3 degrees (its
+    # end) around the bottom point (0, -1, 0); its flanks at 20 degrees.
+    radius = 0.12
+
+    def ring(y, r):
+        return [[-r, y, 0.0], [r, y, 0.0], [0.0, y, -r], [0.0, y, r]]
+
+    def material_ring(degrees):
+        s, c = math.sin(math.radians(degrees)), math.cos(math.radians(degrees))
+        return [[-s, -c, 0.0], [s, -c, 0.0], [0.0, -c, -s], [0.0, -c, s]]
+
+    flanks = material_ring(20)
+    stem_material = material_ring(9) + material_ring(3)
+    fixed = len(start)
+    start += flanks + stem_material
+    out_stem = ring(-1.0, radius) + ring(-2.4, radius)
+    final_stem = ring(-0.45, radius) + ring(-1.85, radius)
+    final_flanks = [[-0.3, -0.55, 0.0], [0.3, -0.55, 0.0], [0.0, -0.5, -0.28], [0.0, -0.5, 0.28]]
+    target1 = start[:fixed] + flanks + out_stem
+    target3 = final + final_flanks + final_stem
+    target2 = [lerp(a, b, 0.5) for a, b in zip(target1, target3)]
+    return {
+        "dimension": 3,
+        "name": "clover3d",
+        "description": "A unit sphere of 10,000 points becomes a four-leaf clover with a round stem in 120 "
+        "resampling steps (the paper's Fig. 3, top): the 2D clover's handles on the equator, handles above and "
+        "below the leaves and notches that flatten it, and rings of handles that pull out the stem. Made by "
+        "scripts/make_scenes.py.",
+        "shape": {"type": "sphere", "center": [0.0, 0.0, 0.0], "radius": 1.0, "points": 10000},
+        "grid": {"spacing": 0.035},
+        "radius_factor": 3.0,
+        "variant": "exact",
+        "deformation": {"kind": "rigid", "alpha": 1.0},
+        "stages": [{
+            "handles": rounded(start),
+            "targets": [
+                {"steps": 40, "handles": rounded(target1)},
+                {"steps": 40, "handles": rounded(target2)},
+                {"steps": 40, "handles": rounded(target3)},
+            ],
+        }],
+    }
+
+
+def torus_tentacles():
+    """A torus (major radius 1, minor 0.35) grows four tentacles out of its
+    outer equator: first straight out to 1.2 beyond it, thinning to a radius
+    of 0.1, then curling up and further out."""
+    big, small = 1.0, 0.35
+    outer = big + small
+
+    def tube(azimuth, v):
+        """The torus point at azimuth and tube angle v (0: outer equator)."""
+        a, b = math.radians(azimuth), math.radians(v)
+        rr = big + small * math.cos(b)
+        return [rr * math.cos(a), rr * math.sin(a), small * math.sin(b)]
+
+    start, target1, target2 = [], [], []
+    for k in range(4):
+        phi = 90 * k + 20
+        u = [math.cos(math.radians(phi)), math.sin(math.radians(phi)), 0.0]
+        t = [-u[1], u[0], 0.0]
+        # Base: held where it is.
+        base = [tube(phi - 14, 0), tube(phi + 14, 0), tube(phi, -45), tube(phi, 45)]
+        start += base
+        target1 += base
+        target2 += base
+        # End: four handles close around the outer equator's point, pulled out.
+        end = [tube(phi - 4, 0), tube(phi + 4, 0), tube(phi, -12), tube(phi, 12)]
+        start += end
+        for length, lift, goal in ((1.2, 0.0, target1), (1.6, 0.9, target2)):
+            centre = [outer * u[i] + length * u[i] for i in range(2)] + [lift]
+            r = 0.1
+            goal += [[centre[0] - r * t[0], centre[1] - r * t[1], centre[2]],
+                     [centre[0] + r * t[0], centre[1] + r * t[1], centre[2]],
+                     [centre[0], centre[1], centre[2] - r], [centre[0], centre[1], centre[2] + r]]
+        # The hole side and the top and bottom between tentacles: held.
+        anchors = [tube(phi + 45, 180), tube(phi + 45, 90), tube(phi + 45, -90), tube(phi + 45, 0)]
+        start += anchors
+        target1 += anchors
+        target2 += anchors
+    return {
+        "dimension": 3,
+        "name": "torus_tentacles",
+        "description": "A torus grows four long, thin tentacles (radius 0.1, about 3 h) out of its outer equator "
+        "in 60 steps, then curls them up and further out in 60 more. Made by scripts/make_scenes.py.",
+        "shape": {"type": "torus", "center": [0.0, 0.0, 0.0], "major_radius": big, "minor_radius": small},
+        "grid": {"spacing": 0.035},
+        "radius_factor": 3.0,
+        "variant": "exact",
+        "deformation": {"kind": "rigid", "alpha": 1.0},
+        "stages": [{
+            "handles": rounded(start),
+            "targets": [{"steps": 60, "handles": rounded(target1)}, {"steps": 60, "handles": rounded(target2)}],
+        }],
+    }
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
-    for name, scene in (("clover2d", clover2d()),):
+    for name, scene in (("clover2d", clover2d()), ("clover3d", clover3d()), ("torus_tentacles", torus_tentacles())):
         path = os.path.join(OUT, name + ".json")
         text = json.dumps(scene, indent=2)
         # One line per point: [x, y] rather than a number per line.
