@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include "core/raw_point_file.hpp"
@@ -85,6 +87,7 @@ TriangleMesh read_mesh(const std::string& path) {
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) fail(path, "cannot tell its size: " + error.message());
   detail::RawPointFile raw = detail::read_ply(in, size, path);
+  if (!raw.face_problem.empty()) fail(path, raw.face_problem);
   TriangleMesh mesh;
   mesh.vertices = std::move(raw.points.positions);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)

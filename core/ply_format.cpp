@@ -141,18 +141,22 @@ struct VertexLayout {
   std::size_t face_property = kNone;  // its `vertex_indices` (or `vertex_index`) list
 };
 
-// One face's vertex indices, fan-triangulated into raw.triangles.
+// One face's vertex indices, fan-triangulated into raw.triangles. A face that
+// cannot be used is skipped and the first such is noted in raw.face_problem:
+// only a mesh reader needs the faces, so only it fails on them.
 void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::uint64_t face) {
+  ++raw.faces;
+  auto problem = [&](const std::string& what) {
+    if (raw.face_problem.empty()) raw.face_problem = "face " + std::to_string(face) + ": " + what;
+  };
   if (indices.size() < 3)
-    fail(raw.path, "face " + std::to_string(face) + " has " + std::to_string(indices.size()) +
-                       " vertices (a face needs at least 3)");
+    return problem("has " + std::to_string(indices.size()) + " vertices (a face needs at least 3)");
   for (double index : indices)
     if (index < 0.0 || index >= static_cast<double>(vertex_count))
-      fail(raw.path, "face " + std::to_string(face) + ": vertex index " + std::to_string(static_cast<std::int64_t>(index)) +
-                         " is out of range (the file has " + std::to_string(vertex_count) + " vertices)");
+      return problem("vertex index " + std::to_string(static_cast<std::int64_t>(index)) +
+                     " is out of range (the file has " + std::to_string(vertex_count) + " vertices)");
   auto at = [&](std::size_t k) { return static_cast<std::uint32_t>(indices[k]); };
   for (std::size_t k = 1; k + 1 < indices.size(); ++k) raw.triangles.push_back({at(0), at(k), at(k + 1)});
-  ++raw.faces;
 }
 
 Header read_header(std::istream& in, const std::string& path) {

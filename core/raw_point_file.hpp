@@ -33,6 +33,7 @@ struct RawPointFile {
   bool has_faces = false;
   std::uint64_t faces = 0;
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::string face_problem;  // the first face that could not be used (skipped), if any
 
   // "line 12" or "vertex 5": where point i stands in the file.
   std::string where(std::size_t i) const;

@@ -558,3 +558,9 @@ TEST_CASE("MLS deformation rejects invalid handles, weights and times") {
   points.normals.push_back(Vec<3>::UnitX());
   CHECK_THROWS_WITH_AS(mls.apply(points, pool), doctest::Contains("1 points but 2 normals"), std::invalid_argument);
 }
+
+TEST_CASE("MLS kind names: to_string and parse_mls_kind are inverse, and unknown names list the accepted ones") {
+  for (MlsKind kind : {MlsKind::affine, MlsKind::similarity, MlsKind::rigid}) CHECK(parse_mls_kind(to_string(kind)) == kind);
+  CHECK_THROWS_WITH_AS(parse_mls_kind("Rigid"), "unknown deformation kind 'Rigid' (expected affine, similarity or rigid)",
+                       std::invalid_argument);
+}
