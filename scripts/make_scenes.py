@@ -128,19 +128,10 @@ def clover2d():
         "handles": start,
         "targets": [{"steps": 40, "handles": rounded(halfway)}, {"steps": 40, "handles": rounded(final)}],
     }
-    return {
-        "dimension": 2,
-        "name": "clover2d",
-        "description": "A unit circle of 250 points becomes a four-leaf clover with a stem in 120 resampling steps "
+    return scene(2, "clover2d", "A unit circle of 250 points becomes a four-leaf clover with a stem in 120 resampling steps "
         "(the paper's Fig. 2): stage 1 pulls a stem out of the circle's bottom, stage 2 swaps the anchors for "
-        "leaf handles and grows four leaves. Made by scripts/make_scenes.py.",
-        "shape": {"type": "circle", "center": [0.0, 0.0], "radius": 1.0, "points": 250},
-        "grid": {"spacing": 0.024},
-        "radius_factor": 3.0,
-        "variant": "exact",
-        "deformation": {"kind": "rigid", "alpha": 1.0},
-        "stages": [stage1, stage2],
-    }
+        "leaf handles and grows four leaves.",
+                 {"type": "circle", "center": [0.0, 0.0], "radius": 1.0, "points": 250}, 0.024, [stage1, stage2])
 
 
 def spherical(r, azimuth, latitude):
@@ -193,27 +184,11 @@ def clover3d():
     target1 = start[:fixed] + flanks + out_stem
     target3 = final + final_flanks + final_stem
     target2 = [lerp(a, b, 0.5) for a, b in zip(target1, target3)]
-    return {
-        "dimension": 3,
-        "name": "clover3d",
-        "description": "A unit sphere of 10,000 points becomes a four-leaf clover with a round stem in 120 "
+    targets = [{"steps": 40, "handles": rounded(t)} for t in (target1, target2, target3)]
+    return scene(3, "clover3d", "A unit sphere of 10,000 points becomes a four-leaf clover with a round stem in 120 "
         "resampling steps (the paper's Fig. 3, top): the 2D clover's handles on the equator, handles above and "
-        "below the leaves and notches that flatten it, and rings of handles that pull out the stem. Made by "
-        "scripts/make_scenes.py.",
-        "shape": {"type": "sphere", "center": [0.0, 0.0, 0.0], "radius": 1.0, "points": 10000},
-        "grid": {"spacing": 0.035},
-        "radius_factor": 3.0,
-        "variant": "exact",
-        "deformation": {"kind": "rigid", "alpha": 1.0},
-        "stages": [{
-            "handles": rounded(start),
-            "targets": [
-                {"steps": 40, "handles": rounded(target1)},
-                {"steps": 40, "handles": rounded(target2)},
-                {"steps": 40, "handles": rounded(target3)},
-            ],
-        }],
-    }
+        "below the leaves and notches that flatten it, and rings of handles that pull out the stem.",
+                 {"type": "sphere", "center": [0.0, 0.0, 0.0], "radius": 1.0, "points": 10000}, 0.035, [{"handles": rounded(start), "targets": targets}])
 
 
 def torus_tentacles():
@@ -253,20 +228,24 @@ def torus_tentacles():
         start += anchors
         target1 += anchors
         target2 += anchors
+    targets = [{"steps": 60, "handles": rounded(target1)}, {"steps": 60, "handles": rounded(target2)}]
+    return scene(3, "torus_tentacles", "A torus grows four long, thin tentacles (radius 0.1, about 3 h) out of its outer equator "
+        "in 60 steps, then curls them up and further out in 60 more.",
+                 {"type": "torus", "center": [0.0, 0.0, 0.0], "major_radius": big, "minor_radius": small}, 0.035, [{"handles": rounded(start), "targets": targets}])
+
+
+def scene(dimension, name, description, shape, h, stages):
+    """A scene with the settings every scene here shares: Delta = 3h, exact resampling, rigid MLS, alpha = 1."""
     return {
-        "dimension": 3,
-        "name": "torus_tentacles",
-        "description": "A torus grows four long, thin tentacles (radius 0.1, about 3 h) out of its outer equator "
-        "in 60 steps, then curls them up and further out in 60 more. Made by scripts/make_scenes.py.",
-        "shape": {"type": "torus", "center": [0.0, 0.0, 0.0], "major_radius": big, "minor_radius": small},
-        "grid": {"spacing": 0.035},
+        "dimension": dimension,
+        "name": name,
+        "description": description + " Made by scripts/make_scenes.py.",
+        "shape": shape,
+        "grid": {"spacing": h},
         "radius_factor": 3.0,
         "variant": "exact",
         "deformation": {"kind": "rigid", "alpha": 1.0},
-        "stages": [{
-            "handles": rounded(start),
-            "targets": [{"steps": 60, "handles": rounded(target1)}, {"steps": 60, "handles": rounded(target2)}],
-        }],
+        "stages": stages,
     }
 
 
