@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "core/point_set_io.hpp"
 #include "core/point_set_resampling.hpp"
+#include "core/surface_samples.hpp"
 
 namespace amls::app {
 
@@ -41,9 +42,11 @@ void add_resample_command(CLI::App& app) {
   auto options = std::make_shared<ResampleOptions>();
   CLI::App* cmd = app.add_subcommand(
       "resample",
-      "resample a point set with oriented normals once on a grid (unit square/cube, or the input's padded "
-      "bounding box when it lies outside) and write the new points; .ply or .xyz, 2D or 3D");
-  cmd->add_option("input", options->input, "point set to read (.ply or .xyz)")->required();
+      "resample a surface once on a grid (unit square/cube, or the input's padded bounding box when it lies "
+      "outside) and write the new points. Input: a point set with normals (.ply, .xyz; 2D or 3D), one without "
+      "(normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle mesh (.obj, .ply "
+      "with faces; sampled at h with face normals)");
+  cmd->add_option("input", options->input, "point set or mesh to read (.ply, .xyz or .obj)")->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
   CLI::Option* grid = cmd->add_option("--grid", options->resampling.grid, "cells per unit length: h = 1/N")
                           ->check(CLI::PositiveNumber)
@@ -66,13 +69,16 @@ void add_resample_command(CLI::App& app) {
     options->resampling.variant = parse_variant(options->variant);
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
-    LoadedPointSet loaded = read_point_set(options->input, options->dimension);
+    // Meshes are sampled at h, and normals are estimated over Delta where the file has none.
+    const double h = options->resampling.spacing > 0.0 ? options->resampling.spacing : 1.0 / options->resampling.grid;
+    SurfaceSampleOptions sampling;
+    sampling.spacing = h;
+    sampling.normal_radius = options->resampling.radius_factor * h;
+    sampling.dimension = options->dimension;
+    sampling.threads = options->resampling.threads;
+    SurfaceSamples loaded = load_surface_samples(options->input, sampling);
     for (const std::string& warning : loaded.warnings) std::cerr << "amls: warning: " << warning << "\n";
-    if (loaded.points.empty()) throw std::runtime_error(options->input + ": no points to resample");
-    if (!loaded.has_normals)
-      throw std::runtime_error(options->input +
-                               ": has no normals, and resampling needs oriented normals (normal estimation is "
-                               "not available yet)");
+    std::cout << options->input << ": " << loaded.source << "\n";
     if (loaded.dimension == 2) {
       resample_and_write(to_2d(loaded.points), *options, format);
     } else {

@@ -4,37 +4,80 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "core/root_finding.hpp"
 
 namespace amls {
 
+namespace {
+
+// The squared distance from p to the nearest indexed point other than `skip`,
+// searching ever wider from `radius` (the index must hold such a point).
 template <int D>
-SpacingStats spacing_stats(const PointSet<D>& points, double h) {
-  SpacingStats s;
-  if (points.size() < 2) return s;
+double nearest_squared(const PointIndex<D>& index, const Vec<D>& p, double radius, std::uint32_t skip) {
+  double best2 = std::numeric_limits<double>::infinity();
+  auto consider = [&](std::uint32_t id, const Vec<D>& q) {
+    if (id != skip) best2 = std::min(best2, (q - p).squaredNorm());
+  };
+  for (; !std::isfinite(best2); radius *= 4.0) index.for_each_within(p, radius, consider);
+  return best2;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h) {
+  if (points.size() < 2) return {};
   PointIndex<D> index;
   index.build(points.positions, Vec<D>::Zero(), 2.0 * h);
   std::vector<double> nearest(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec<D>& p = points.positions[i];
-    double best2 = std::numeric_limits<double>::infinity();
-    auto consider = [&](std::uint32_t id, const Vec<D>& q) {
-      if (id != i) best2 = std::min(best2, (q - p).squaredNorm());
-    };
-    for (double radius = 2.0 * h; !std::isfinite(best2); radius *= 4.0) index.for_each_within(p, radius, consider);
-    nearest[i] = std::sqrt(best2) / h;
-  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+    nearest[i] = std::sqrt(nearest_squared(index, points.positions[i], 2.0 * h, static_cast<std::uint32_t>(i))) / h;
   std::sort(nearest.begin(), nearest.end());
-  s.min = nearest.front();
-  s.max = nearest.back();
-  s.median = nearest[nearest.size() / 2];
+  return nearest;
+}
+
+SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings) {
+  SpacingStats s;
+  if (sorted_spacings.empty()) return s;
+  s.min = sorted_spacings.front();
+  s.max = sorted_spacings.back();
+  s.median = sorted_spacings[sorted_spacings.size() / 2];
+  return s;
+}
+
+template <int D>
+SpacingStats spacing_stats(const PointSet<D>& points, double h) {
+  return spacing_stats_of(nearest_neighbour_spacings(points, h));
+}
+
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h) {
+  DistanceStats s;
+  if (from.empty()) return s;
+  if (to.empty()) throw std::invalid_argument("nearest distances: the set to measure against is empty");
+  PointIndex<D> index;
+  index.build(to, to.front(), 2.0 * h);
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  double sum = 0.0;
+  for (const Vec<D>& p : from) {
+    const double d = std::sqrt(nearest_squared(index, p, 2.0 * h, kNone)) / h;
+    sum += d;
+    s.max = std::max(s.max, d);
+  }
+  s.count = from.size();
+  s.mean = sum / static_cast<double>(from.size());
   return s;
 }
 
 template SpacingStats spacing_stats<2>(const PointSet<2>&, double);
 template SpacingStats spacing_stats<3>(const PointSet<3>&, double);
+template std::vector<double> nearest_neighbour_spacings<2>(const PointSet<2>&, double);
+template std::vector<double> nearest_neighbour_spacings<3>(const PointSet<3>&, double);
+template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
+template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
 
 namespace {
 

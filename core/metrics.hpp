@@ -3,6 +3,7 @@
 // surface of a point set.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/amls_surface.hpp"
 
@@ -17,6 +18,22 @@ struct SpacingStats {
 
 template <int D>
 SpacingStats spacing_stats(const PointSet<D>& points, double h);
+// Every point's nearest-neighbour distance in units of h, sorted (empty for fewer than 2 points).
+template <int D>
+std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h);
+SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
+
+// Distances from each point of one set to the nearest point of another, in units of h.
+struct DistanceStats {
+  double mean = 0.0;
+  double max = 0.0;
+  std::size_t count = 0;  // points measured
+};
+
+// From every position in `from` to its nearest position in `to` (which must
+// not be empty unless `from` is).
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h);
 
 // How the zero set of F meets rays cast from a centre. 2D: one closed curve
 // around the centre is crossed exactly once by every ray (the paper's test is

@@ -143,6 +143,24 @@ Vec<D> carry_normal(const Mat<D>& linear, const Vec<D>& normal) {
 
 }  // namespace
 
+const char* to_string(MlsKind kind) {
+  switch (kind) {
+    case MlsKind::affine:
+      return "affine";
+    case MlsKind::similarity:
+      return "similarity";
+    case MlsKind::rigid:
+      return "rigid";
+  }
+  return "?";
+}
+
+MlsKind parse_mls_kind(const std::string& name) {
+  for (MlsKind kind : {MlsKind::affine, MlsKind::similarity, MlsKind::rigid})
+    if (name == to_string(kind)) return kind;
+  throw std::invalid_argument("unknown deformation kind '" + name + "' (expected affine, similarity or rigid)");
+}
+
 template <int D>
 MlsDeformation<D>::MlsDeformation(std::vector<Vec<D>> from, std::vector<Vec<D>> to, MlsKind kind, double alpha)
     : kind_(kind), alpha_(alpha) {

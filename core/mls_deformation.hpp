@@ -7,6 +7,7 @@
 // w_i(v) = 1 / |p_i - v|^(2 alpha), and moves to f(v) = l_v(v).
 #include <atomic>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "core/deformation.hpp"
@@ -14,6 +15,11 @@
 namespace amls {
 
 enum class MlsKind { affine, similarity, rigid };
+
+// "affine", "similarity", "rigid".
+const char* to_string(MlsKind kind);
+// Throws std::invalid_argument naming the accepted values.
+MlsKind parse_mls_kind(const std::string& name);
 
 // The best map l_v at one point v.
 template <int D>

@@ -128,12 +128,36 @@ struct Header {
   std::size_t lines = 0;  // lines read so far
 };
 
-// Where the vertex element's properties go: slot 0..5 is x y z nx ny nz, -1 is ignored.
+constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+// Where the vertex element's properties go: slot 0..5 is x y z nx ny nz, -1 is
+// ignored. And where the faces are, if the file has any.
 struct VertexLayout {
   std::size_t element = 0;
   std::vector<int> slot;
   bool has_normals = false;
+  std::uint64_t vertex_count = 0;
+  std::size_t face_element = kNone;   // the `face` element
+  std::size_t face_property = kNone;  // its `vertex_indices` (or `vertex_index`) list
 };
+
+// One face's vertex indices, fan-triangulated into raw.triangles. A face that
+// cannot be used is skipped and the first such is noted in raw.face_problem:
+// only a mesh reader needs the faces, so only it fails on them.
+void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::uint64_t face) {
+  ++raw.faces;
+  auto problem = [&](const std::string& what) {
+    if (raw.face_problem.empty()) raw.face_problem = "face " + std::to_string(face) + ": " + what;
+  };
+  if (indices.size() < 3)
+    return problem("has " + std::to_string(indices.size()) + " vertices (a face needs at least 3)");
+  for (double index : indices)
+    if (index < 0.0 || index >= static_cast<double>(vertex_count))
+      return problem("vertex index " + std::to_string(static_cast<std::int64_t>(index)) +
+                     " is out of range (the file has " + std::to_string(vertex_count) + " vertices)");
+  auto at = [&](std::size_t k) { return static_cast<std::uint32_t>(indices[k]); };
+  for (std::size_t k = 1; k + 1 < indices.size(); ++k) raw.triangles.push_back({at(0), at(k), at(k + 1)});
+}
 
 Header read_header(std::istream& in, const std::string& path) {
   Header header;
@@ -270,6 +294,20 @@ VertexLayout vertex_layout(const Header& header, const std::string& path) {
   if (normals != 0 && normals != 3)
     fail(path, "the vertex element has only some of the normal properties (nx ny nz, or normal_x normal_y normal_z)");
   layout.has_normals = normals == 3;
+  layout.vertex_count = vertex->count;
+  for (std::size_t e = 0; e < header.elements.size(); ++e) {
+    if (header.elements[e].name != "face") continue;
+    const std::vector<Property>& properties = header.elements[e].properties;
+    for (std::size_t k = 0; k < properties.size(); ++k) {
+      const Property& p = properties[k];
+      if (p.name != "vertex_indices" && p.name != "vertex_index") continue;
+      if (!p.is_list) fail(path, "face property '" + p.name + "' is not a list");
+      if (!is_integer(p.type)) fail(path, "face property '" + p.name + "' holds " + std::string(name_of(p.type)) +
+                                              " values; vertex indices must be integers");
+      layout.face_element = e;
+      layout.face_property = k;
+    }
+  }
   return layout;
 }
 
@@ -309,6 +347,8 @@ void read_ascii_body(std::istream& in, std::uint64_t bytes_left, Header& header,
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const Element& element = header.elements[e];
     const bool is_vertex = e == layout.element;
+    const bool is_face = e == layout.face_element;
+    std::vector<double> face;
     // An item is one line: at least one word and one separator per property.
     check_count_fits(element, 2 * element.properties.size(), bytes_left + 1, path);
     if (element.properties.empty()) continue;
@@ -350,12 +390,17 @@ void read_ascii_body(std::istream& in, std::uint64_t bytes_left, Header& header,
         if (static_cast<std::uint64_t>(*length) > words.size() - w)
           fail_here("too few values for a '" + element.name + "' item (list '" + p.name + "' promises " +
                     std::string(word) + ")");
+        const bool is_face_list = is_face && k == layout.face_property;
+        face.clear();
         for (std::int64_t j = 0; j < *length; ++j) {
           const std::string_view item_word = words[w++];
-          if (!parse_scalar(item_word, p.type))
+          const std::optional<double> value = parse_scalar(item_word, p.type);
+          if (!value)
             fail_here(quoted(item_word) + " is not a valid " + std::string(name_of(p.type)) + " in list '" + p.name +
                       "'");
+          if (is_face_list) face.push_back(*value);
         }
+        if (is_face_list) add_face(raw, face, layout.vertex_count, item);
       }
       if (w != words.size())
         fail_here(std::to_string(words.size() - w) + " values too many for a '" + element.name + "' item");
@@ -415,7 +460,11 @@ class BinaryBody {
 
   std::uint64_t bytes_left() const { return bytes_left_; }
 
-  void read_element(const Element& element, const VertexLayout* layout, RawPointFile& raw) {
+  // `layout` for the vertex element, else null; `faces` for the face element's index list, else kNone.
+  void read_element(const Element& element, const VertexLayout* layout, RawPointFile& raw, std::size_t faces = kNone,
+                    std::uint64_t vertex_count = 0) {
+    faces_ = faces;
+    vertex_count_ = vertex_count;
     check_count_fits(element, element.min_binary_bytes(), bytes_left_, path_);
     if (element.count == 0 || element.properties.empty()) return;
     if (layout) raw.points.reserve(element.count);
@@ -466,6 +515,15 @@ class BinaryBody {
       if (length < 0.0)
         fail(path_, quoted(element.name) + " item " + std::to_string(item) + ": negative list length " +
                         std::to_string(static_cast<std::int64_t>(length)) + " for '" + p.name + "'");
+      if (k == faces_) {
+        const std::size_t size = size_of(p.type);
+        take(static_cast<std::size_t>(length) * size, element, item);
+        face_.clear();
+        for (std::size_t j = 0; j < static_cast<std::size_t>(length); ++j)
+          face_.push_back(decode(buffer_.data() + j * size, p.type, swap_));
+        add_face(raw, face_, vertex_count_, item);
+        continue;
+      }
       // length < 2^32 and an item is at most 8 bytes: no overflow.
       skip(static_cast<std::uint64_t>(length) * size_of(p.type), element, item);
     }
@@ -504,6 +562,9 @@ class BinaryBody {
   bool swap_;
   const std::string& path_;
   std::vector<unsigned char> buffer_;
+  std::size_t faces_ = kNone;
+  std::uint64_t vertex_count_ = 0;
+  std::vector<double> face_;
 };
 
 }  // namespace
@@ -515,6 +576,7 @@ RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::stri
   const VertexLayout layout = vertex_layout(header, path);
   raw.declared_dimension = header.declared_dimension;
   raw.has_normals = layout.has_normals;
+  raw.has_faces = layout.face_element != kNone;
   const std::streamoff header_bytes = in.tellg();
   if (header_bytes < 0) fail(path, "cannot tell where the header ends");
   const std::uint64_t bytes_left = file_size - std::min(file_size, static_cast<std::uint64_t>(header_bytes));
@@ -526,7 +588,8 @@ RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::stri
       header.encoding == Encoding::binary_little_endian ? std::endian::little : std::endian::big;
   BinaryBody body(in, bytes_left, file_order != std::endian::native, path);
   for (std::size_t e = 0; e < header.elements.size(); ++e)
-    body.read_element(header.elements[e], e == layout.element ? &layout : nullptr, raw);
+    body.read_element(header.elements[e], e == layout.element ? &layout : nullptr, raw,
+                      e == layout.face_element ? layout.face_property : kNone, layout.vertex_count);
   if (body.bytes_left() > 0)
     raw.warnings.push_back(path + ": " + std::to_string(body.bytes_left()) +
                            " bytes after the last element were ignored");

@@ -252,4 +252,8 @@ void write_point_set(const std::string& path, const PointSet<3>& points, PointFi
   write_3d(path, points, 3, format);
 }
 
+void write_text_file(const std::string& path, const std::string& text) {
+  write_atomically(path, [&](detail::FileSink& sink) { sink.write(text); });
+}
+
 }  // namespace amls

@@ -75,4 +75,7 @@ PointSet<3> to_3d(const PointSet<2>& points);
 void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format);
 void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format);
 
+// Writes `text` to `path` the same way: through a temporary file renamed over it.
+void write_text_file(const std::string& path, const std::string& text);
+
 }  // namespace amls

@@ -3,6 +3,7 @@
 // xyz_format.cpp): what a format's reader hands back before the dimension is
 // decided and the normals are checked, the byte sink the writers fill, and the
 // text helpers both formats share.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -28,6 +29,11 @@ struct RawPointFile {
   // For text formats, the line each point came from, so that messages can name it.
   std::vector<std::size_t> lines;
   std::vector<std::string> warnings;
+  // PLY: the face element's polygons, fan-triangulated (indices checked against the vertex count).
+  bool has_faces = false;
+  std::uint64_t faces = 0;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::string face_problem;  // the first face that could not be used (skipped), if any
 
   // "line 12" or "vertex 5": where point i stands in the file.
   std::string where(std::size_t i) const;

@@ -16,18 +16,6 @@ namespace {
 
 constexpr MlsKind kKinds[] = {MlsKind::affine, MlsKind::similarity, MlsKind::rigid};
 
-const char* name_of(MlsKind kind) {
-  switch (kind) {
-    case MlsKind::affine:
-      return "affine";
-    case MlsKind::similarity:
-      return "similarity";
-    case MlsKind::rigid:
-      return "rigid";
-  }
-  return "?";
-}
-
 template <int D>
 Vec<D> random_vec(std::mt19937& rng, double extent = 1.0) {
   std::uniform_real_distribution<double> u(-extent, extent);
@@ -104,7 +92,7 @@ void check_interpolates_handles() {
   for (MlsKind kind : kKinds) {
     for (double alpha : {0.5, 1.0, 2.0}) {
       CAPTURE(D);
-      CAPTURE(name_of(kind));
+      CAPTURE(to_string(kind));
       CAPTURE(alpha);
       const MlsDeformation<D> mls(from, to, kind, alpha);
       for (std::size_t i = 0; i < from.size(); ++i) {
@@ -125,7 +113,7 @@ void check_identity_for_still_handles() {
   const auto handles = random_points<D>(rng, 7);
   for (MlsKind kind : kKinds) {
     CAPTURE(D);
-    CAPTURE(name_of(kind));
+    CAPTURE(to_string(kind));
     const MlsDeformation<D> mls(handles, handles, kind);
     for (const Vec<D>& x : random_points<D>(rng, 50, 1.5)) {
       const MlsLocalMap<D> local = mls.local_map(x);
@@ -145,8 +133,8 @@ void check_reproduces_global_maps() {
       if (map_class < kind) continue;
       for (int trial = 0; trial < 5; ++trial) {
         CAPTURE(D);
-        CAPTURE(name_of(kind));
-        CAPTURE(name_of(map_class));
+        CAPTURE(to_string(kind));
+        CAPTURE(to_string(map_class));
         const auto from = random_points<D>(rng, D + 3);
         const GlobalMap<D> g = random_map<D>(rng, map_class);
         const MlsDeformation<D> mls(from, g(from), kind, trial % 2 == 0 ? 1.0 : 1.5);
@@ -187,7 +175,7 @@ void check_single_handle_translates() {
   const Vec<D> p = random_vec<D>(rng), q = random_vec<D>(rng);
   for (MlsKind kind : kKinds) {
     CAPTURE(D);
-    CAPTURE(name_of(kind));
+    CAPTURE(to_string(kind));
     const MlsDeformation<D> mls({p}, {q}, kind);
     CHECK(mls.map(p) == q);
     PointSet<D> points;
@@ -235,7 +223,7 @@ void check_thread_count_independence() {
   const PointSet<D> points = random_oriented_points<D>(rng, 1000);
   const auto from = random_points<D>(rng, 9), to = random_points<D>(rng, 9);
   for (MlsKind kind : kKinds) {
-    CAPTURE(name_of(kind));
+    CAPTURE(to_string(kind));
     const MlsDeformation<D> mls(from, to, kind);
     PointSet<D> reference = points;
     ThreadPool serial(1);
@@ -286,7 +274,7 @@ void check_robust_near_handles() {
   const auto from = random_points<D>(rng, 6), to = random_points<D>(rng, 6);
   for (MlsKind kind : kKinds) {
     for (double alpha : {1.0, 4.0}) {
-      CAPTURE(name_of(kind));
+      CAPTURE(to_string(kind));
       CAPTURE(alpha);
       const MlsDeformation<D> mls(from, to, kind, alpha);
       const Vec<D> direction = random_vec<D>(rng).normalized();
@@ -363,7 +351,7 @@ TEST_CASE("2D MLS equals the closed forms of Schaefer et al.") {
   std::mt19937 rng(5);
   const auto from = random_points<2>(rng, 6), to = random_points<2>(rng, 6);
   for (MlsKind kind : kKinds) {
-    CAPTURE(name_of(kind));
+    CAPTURE(to_string(kind));
     const MlsDeformation<2> mls(from, to, kind);
     for (const Vec<2>& v : random_points<2>(rng, 50, 1.5))
       CHECK((mls.map(v) - paper_closed_form(from, to, v, kind)).norm() < 1e-12);
@@ -475,7 +463,7 @@ TEST_CASE("carried normals stay unit length and point outward under a smooth han
     std::vector<Vec<2>> to = stretch(from);
     for (Vec<2>& q : to) q += random_vec<2>(rng, 0.08);
     for (MlsKind kind : kKinds) {
-      CAPTURE(name_of(kind));
+      CAPTURE(to_string(kind));
       PointSet<2> points = sample_circle(center, 1.0, 256);
       MlsDeformation<2>(from, to, kind).apply(points, pool);
       check_outward_unit_normals(points);
@@ -499,7 +487,7 @@ TEST_CASE("carried normals stay unit length and point outward under a smooth han
     std::vector<Vec<3>> to = stretch(from);
     for (Vec<3>& q : to) q += random_vec<3>(rng, 0.05);
     for (MlsKind kind : kKinds) {
-      CAPTURE(name_of(kind));
+      CAPTURE(to_string(kind));
       const PointSet<3> sphere = sample_sphere(center, 1.0, 2000);
       PointSet<3> points = sphere;
       const MlsDeformation<3> mls(from, to, kind);
@@ -557,4 +545,10 @@ TEST_CASE("MLS deformation rejects invalid handles, weights and times") {
   CHECK_THROWS_AS(mls.deform(points, std::nan(""), 1.0, pool), std::invalid_argument);
   points.normals.push_back(Vec<3>::UnitX());
   CHECK_THROWS_WITH_AS(mls.apply(points, pool), doctest::Contains("1 points but 2 normals"), std::invalid_argument);
+}
+
+TEST_CASE("MLS kind names: to_string and parse_mls_kind are inverse, and unknown names list the accepted ones") {
+  for (MlsKind kind : {MlsKind::affine, MlsKind::similarity, MlsKind::rigid}) CHECK(parse_mls_kind(to_string(kind)) == kind);
+  CHECK_THROWS_WITH_AS(parse_mls_kind("Rigid"), "unknown deformation kind 'Rigid' (expected affine, similarity or rigid)",
+                       std::invalid_argument);
 }

@@ -1,0 +1,13 @@
+#pragma once
+// `amls deform`'s report: JSON and a short text summary.
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+
+#include "core/scene_run.hpp"
+
+namespace amls::app {
+
+nlohmann::json to_json(const SceneRunReport& report);
+void print_summary(std::ostream& out, const SceneRunReport& report);
+
+}  // namespace amls::app

@@ -1,0 +1,65 @@
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <stdexcept>
+
+#include "core/mesh_io.hpp"
+#include "tests/temp_dir.hpp"
+
+using namespace amls;
+using amls::test::TempDir;
+using amls::test::write_text;
+
+TEST_CASE("mesh io: OBJ faces, polygons fan-triangulated, v/vt/vn corners and negative indices") {
+  TempDir dir;
+  write_text(dir.file("quad.obj"),
+             "# a unit square and a triangle\r\nmtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+             "g square\nf 1/1/1 2/1/1 3//1 4\nv 0 0 1\nf -5 -4 -1\n");
+  const TriangleMesh mesh = read_mesh(dir.file("quad.obj"));
+  REQUIRE(mesh.vertices.size() == 5);
+  REQUIRE(mesh.triangles.size() == 3);
+  CHECK(mesh.triangles[0] == std::array<std::uint32_t, 3>{0, 1, 2});
+  CHECK(mesh.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 3});
+  CHECK(mesh.triangles[2] == std::array<std::uint32_t, 3>{0, 1, 4});
+  CHECK(is_mesh_file(dir.file("quad.obj")));
+  write_text(dir.file("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
+  CHECK_THROWS_WITH_AS(read_mesh(dir.file("bad.obj")), doctest::Contains("bad.obj: line 3: vertex index 3 is out of range"),
+                       std::runtime_error);
+  write_text(dir.file("bad2.obj"), "v 0 0 x\n");
+  CHECK_THROWS_WITH(read_mesh(dir.file("bad2.obj")), doctest::Contains("line 1: 'x' is not a finite number"));
+}
+
+TEST_CASE("mesh io: PLY faces, ASCII and binary, with the vertex_indices list") {
+  TempDir dir;
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  write_text(dir.file("a.ply"), header + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  const TriangleMesh a = read_mesh(dir.file("a.ply"));
+  CHECK(a.vertices.size() == 4);
+  REQUIRE(a.triangles.size() == 2);
+  CHECK(a.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 3});
+  CHECK(is_mesh_file(dir.file("a.ply")));
+  write_text(dir.file("bad.ply"), header + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 9\n");
+  CHECK_THROWS_WITH(read_mesh(dir.file("bad.ply")), doctest::Contains("face 1: vertex index 9 is out of range"));
+
+  // Binary little endian: one quad (4 indices), triangulated into two.
+  std::string bytes =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+      "property double z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+  const double xyz[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  bytes.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  bytes.push_back(4);
+  const std::uint32_t quad[4] = {0, 1, 2, 3};
+  bytes.append(reinterpret_cast<const char*>(quad), sizeof quad);
+  write_text(dir.file("b.ply"), bytes);
+  const TriangleMesh b = read_mesh(dir.file("b.ply"));
+  REQUIRE(b.triangles.size() == 2);
+  CHECK(b.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 3});
+  CHECK(b.vertices[2] == Vec<3>(1, 1, 0));
+
+  write_text(dir.file("points.ply"), "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                                     "property float z\nend_header\n0 0 0\n");
+  CHECK_FALSE(is_mesh_file(dir.file("points.ply")));
+  CHECK(read_mesh(dir.file("points.ply")).triangles.empty());
+}

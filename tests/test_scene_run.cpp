@@ -1,0 +1,83 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/scene_run.hpp"
+
+using namespace amls;
+
+namespace {
+
+Vec<2> polar(double r, double degrees) {
+  const double a = degrees * std::numbers::pi / 180.0;
+  return Vec<2>(r * std::cos(a), r * std::sin(a));
+}
+
+// A short clover: the unit circle of 250 points (spacing 0.025) grows four
+// leaves in 8 steps, then a stem (a handle added beside the bottom notch: a
+// new stage) in 8 more, on the clover2d scene's grid (h = 0.024, Delta = 3h).
+Scene<2> short_clover() {
+  Scene<2> scene;
+  scene.shape.type = ShapeType::circle;
+  scene.shape.points = 250;
+  scene.grid_spacing = 0.024;
+  std::vector<Vec<2>> start, leaves;
+  for (double tip : {45.0, 135.0, 225.0, 315.0}) {
+    start.push_back(polar(1.0, tip));
+    leaves.push_back(polar(1.4, tip));
+  }
+  for (double notch : {0.0, 90.0, 180.0, 270.0}) {
+    start.push_back(polar(1.0, notch));
+    leaves.push_back(polar(0.5, notch));
+  }
+  scene.history.begin_stage(start);
+  scene.history.add_target(leaves, 8);
+  std::vector<Vec<2>> with_stem = leaves;
+  with_stem.push_back(leaves.back());  // the bottom notch gets a second handle: a new stage
+  with_stem[7] = polar(0.5, 270) + Vec<2>(0.1, 0);
+  scene.history.begin_stage(with_stem);
+  with_stem.back() = Vec<2>(0, -1.5);
+  scene.history.add_target(with_stem, 8);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("scene run: with resampling the clover stays close to the exact deformed shape and evenly sampled") {
+  const Scene<2> scene = short_clover();
+  std::size_t frames = 0;
+  SceneRunOptions options;
+  options.tracers_per_point = 20;
+  const SceneRunReport r = run_scene<2>(scene, options, [&](std::size_t, const PointSet<2>&) { ++frames; });
+  CHECK(frames == 17);  // R_0 ... R_16
+  CHECK(r.steps == 16);
+  CHECK_FALSE(r.broken);
+  CHECK(r.points_initial == 250);
+  CHECK(r.distance_to_exact_h.mean < 0.5);
+  CHECK(r.distance_to_exact_h.max < 2.0);
+  for (const SceneStepRecord& s : r.per_step) {
+    CHECK(s.spacing_h.min >= 0.3);
+    CHECK(s.spacing_h.max <= 2.0);
+  }
+  // The bounds hold for all but a few points (the resampler leaves gaps of up to ~1.8 h).
+  CHECK(static_cast<double>(r.spacing_above + r.spacing_below) < 0.01 * static_cast<double>(r.spacing_points));
+  CHECK(r.spacing_h.median == doctest::Approx(1.0).epsilon(0.1));
+}
+
+TEST_CASE("scene run: without resampling the stem thins out and the report names the step the surface broke") {
+  const Scene<2> scene = short_clover();
+  SceneRunOptions options;
+  options.resample = false;
+  options.tracers_per_point = 20;
+  const SceneRunReport r = run_scene<2>(scene, options);
+  CHECK(r.broken);
+  CHECK(r.broken_at_step > 8);  // the leaves alone do not break it; the stem does
+  CHECK(r.broken_at_step <= 16);
+  CHECK(r.status_reason.find("broke at step " + std::to_string(r.broken_at_step)) != std::string::npos);
+  CHECK(r.points_final == 250);
+  // Before the break every probe of the exact shape was covered.
+  for (const SceneStepRecord& s : r.per_step)
+    if (s.probed && s.step < r.broken_at_step) CHECK(s.holes == 0);
+  CHECK(r.per_step.back().spacing_h.max > 3.0);
+}
