@@ -79,11 +79,10 @@ SurfaceSamples load_file_shape(const Scene<D>& scene, double spacing, int thread
 // Undefined F at the probes, and the largest |F| / h at the others.
 template <int D>
 void probe(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& probes, std::size_t& holes, double& max_h) {
-  std::vector<Evaluation<D>> values(probes.size());
-  surface.evaluate_many(probes, values);
   holes = 0;
   max_h = 0.0;
-  for (const Evaluation<D>& e : values) {
+  for (const Vec<D>& x : probes) {
+    const Evaluation<D> e = surface.evaluate(x);
     if (!e.defined) {
       ++holes;
       continue;
