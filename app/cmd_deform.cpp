@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/deform_report.hpp"
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
@@ -98,9 +99,7 @@ void add_deform_command(CLI::App& app) {
   cmd->add_flag("--no-resample", options->no_resample,
                 "deform the initial points without resampling (the point set thins out and the surface breaks; the "
                 "report says at which step)");
-  cmd->add_option("--threads", options->threads, "worker threads (results do not depend on it)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_threads_option(*cmd, options->threads);
   cmd->add_option("--tracers", options->tracers_per_point,
                   "tracer points per initial point, standing for the exact deformed shape")
       ->check(CLI::Range(1.0, 10000.0))

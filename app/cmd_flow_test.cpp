@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
 #include "core/flow_test.hpp"
@@ -29,21 +30,15 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   options->config.grid = default_grid;
   CLI::App* cmd = app.add_subcommand(name, description);
   cmd->add_option("--grid", options->config.grid, "cells per unit length: h = 1/N")->capture_default_str();
-  cmd->add_option("--variant", options->variant, "resampler: exact or interpolated")
-      ->check(CLI::IsMember({"exact", "interpolated"}))
-      ->capture_default_str();
-  cmd->add_option("--radius-factor", options->config.radius_factor, "influence radius Delta in units of h")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_variant_option(*cmd, options->variant);
+  add_radius_factor_option(*cmd, options->config.radius_factor);
   cmd->add_option("--min-weight", options->config.min_weight,
                   "F is undefined where the neighbours' weights sum to less than this")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--dt", options->config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("--substeps", options->config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
-  cmd->add_option("--threads", options->config.threads, "worker threads (results do not depend on it)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_threads_option(*cmd, options->config.threads);
   cmd->add_option("--json", options->json_path, "write the JSON report to this file");
   cmd->add_option("--out", options->out_path, "write the final point set to this file (.ply or .xyz)");
   cmd->callback([options, runner] {

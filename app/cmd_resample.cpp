@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "core/point_set_io.hpp"
 #include "core/point_set_resampling.hpp"
 #include "core/surface_samples.hpp"
@@ -56,15 +57,9 @@ void add_resample_command(CLI::App& app) {
       ->excludes(grid);
   cmd->add_option("--dim", options->dimension, "read the input as 2D or 3D (default: from the file)")
       ->check(CLI::IsMember({2, 3}));
-  cmd->add_option("--radius-factor", options->resampling.radius_factor, "influence radius Delta in units of h")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  cmd->add_option("--variant", options->variant, "resampler: exact or interpolated")
-      ->check(CLI::IsMember({"exact", "interpolated"}))
-      ->capture_default_str();
-  cmd->add_option("--threads", options->resampling.threads, "worker threads (results do not depend on it)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_radius_factor_option(*cmd, options->resampling.radius_factor);
+  add_variant_option(*cmd, options->variant);
+  add_threads_option(*cmd, options->resampling.threads);
   cmd->callback([options] {
     options->resampling.variant = parse_variant(options->variant);
     // Check the output's extension before any work is done.

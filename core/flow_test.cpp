@@ -80,49 +80,57 @@ PointSet<D> final_points_of(const DeformingSurface<D>& surface) {
   return out;
 }
 
-}  // namespace
-
-FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress) {
+// One flow test: the shape sampled at spacing h/2, carried by the field over
+// [0, period], then measured against itself by `measure` (which fills the
+// report's error figures and returns the closedness scan).
+template <int D, typename Sample, typename Measure>
+FlowTestRun<D> run_flow_test(const char* test, const FlowTestConfig& config, std::shared_ptr<const VelocityField<D>> field,
+                             double period, Sample&& sample, Measure&& measure, const FlowProgress& progress) {
   validate(config);
   FlowTestReport report;
-  report.test = "vortex";
-  report.dimension = 2;
+  report.test = test;
+  report.dimension = D;
   report.config = config;
-  const Vec<2> center(0.5, 0.75);
-  const double radius = 0.15;
-  const Grid<2> grid = Grid<2>::unit(config.grid);
+  const Grid<D> grid = Grid<D>::unit(config.grid);
   const AmlsParameters parameters{config.radius_factor, config.min_weight};
-  DeformingSurface<2> surface(grid, parameters, config.variant, config.threads);
-  const auto count = static_cast<std::size_t>(std::ceil(2.0 * std::numbers::pi * radius / (0.5 * grid.spacing())));
-  surface.set_points(sample_circle(center, radius, count));
-  run_flow<2>(surface, std::make_shared<SingleVortex>(8.0), 8.0, config, progress, report);
-  const CircleError error = circle_l1_error(surface.surface(), center, radius);
-  report.l1_error = error.l1;
-  finish(report, error.scan);
+  DeformingSurface<D> surface(grid, parameters, config.variant, config.threads);
+  surface.set_points(sample(0.5 * grid.spacing()));
+  run_flow<D>(surface, std::move(field), period, config, progress, report);
+  finish(report, measure(surface.surface(), report));
   return {report, final_points_of(surface)};
 }
 
+}  // namespace
+
+FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress) {
+  const Vec<2> center(0.5, 0.75);
+  const double radius = 0.15;
+  auto sample = [&](double spacing) {
+    return sample_circle(center, radius, static_cast<std::size_t>(std::ceil(2.0 * std::numbers::pi * radius / spacing)));
+  };
+  auto measure = [&](const AmlsSurface<2>& surface, FlowTestReport& report) {
+    const CircleError error = circle_l1_error(surface, center, radius);
+    report.l1_error = error.l1;
+    return error.scan;
+  };
+  return run_flow_test<2>("vortex", config, std::make_shared<SingleVortex>(8.0), 8.0, sample, measure, progress);
+}
+
 FlowTestRun<3> run_enright_test(const FlowTestConfig& config, const FlowProgress& progress) {
-  validate(config);
-  FlowTestReport report;
-  report.test = "enright";
-  report.dimension = 3;
-  report.config = config;
   const Vec<3> center(0.35, 0.35, 0.35);
   const double radius = 0.15;
-  const Grid<3> grid = Grid<3>::unit(config.grid);
-  const AmlsParameters parameters{config.radius_factor, config.min_weight};
-  DeformingSurface<3> surface(grid, parameters, config.variant, config.threads);
-  const double area = 4.0 * std::numbers::pi * radius * radius;
-  const auto count = static_cast<std::size_t>(std::ceil(area / std::pow(0.5 * grid.spacing(), 2)));
-  surface.set_points(sample_sphere(center, radius, count));
-  run_flow<3>(surface, std::make_shared<EnrightField>(3.0), 3.0, config, progress, report);
-  const SphereError error = sphere_volume_error(surface.surface(), center, radius);
-  report.volume_loss = (error.exact_volume - error.volume) / error.exact_volume;
-  report.symmetric_difference = error.symmetric_difference;
-  report.relative_symmetric_difference = error.symmetric_difference / error.exact_volume;
-  finish(report, error.scan);
-  return {report, final_points_of(surface)};
+  auto sample = [&](double spacing) {
+    const double area = 4.0 * std::numbers::pi * radius * radius;
+    return sample_sphere(center, radius, static_cast<std::size_t>(std::ceil(area / (spacing * spacing))));
+  };
+  auto measure = [&](const AmlsSurface<3>& surface, FlowTestReport& report) {
+    const SphereError error = sphere_volume_error(surface, center, radius);
+    report.volume_loss = (error.exact_volume - error.volume) / error.exact_volume;
+    report.symmetric_difference = error.symmetric_difference;
+    report.relative_symmetric_difference = error.symmetric_difference / error.exact_volume;
+    return error.scan;
+  };
+  return run_flow_test<3>("enright", config, std::make_shared<EnrightField>(3.0), 3.0, sample, measure, progress);
 }
 
 }  // namespace amls
