@@ -50,15 +50,29 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   const double inverse_radius = 1.0 / radius_;
   const bool filter = parameters_.orientation_filter;
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    // Points are in cell order, so consecutive points share their candidate
+    // neighbours: every point of the 3^D cells around their cell.
+    std::vector<std::uint32_t> candidates;
+    IVec<D> candidates_cell = IVec<D>::Zero();
+    bool have_candidates = false;
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points_.positions[i];
+      const IVec<D> cell = index_.cell_of(p);
+      if (!have_candidates || cell != candidates_cell) {
+        have_candidates = true;
+        candidates.clear();
+        index_.for_each_in_cells(cell.array() - 1, cell.array() + 1,
+                                 [&](std::uint32_t id, const Vec<D>&) { candidates.push_back(id); });
+        candidates_cell = cell;
+      }
       const Vec<D>& own = points_.normals[i];
       PrattFit<D> fit;
-      index_.for_each_within(p, radius_, [&](std::uint32_t id, const Vec<D>& q) {
-        if (filter && points_.normals[id].dot(own) <= 0.0) return;
-        const Vec<D> u = (q - p) * inverse_radius;
-        fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
-      });
+      for (const std::uint32_t id : candidates) {
+        const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
+        const double s2 = u.squaredNorm();
+        if (s2 > 1.0 || (filter && points_.normals[id].dot(own) <= 0.0)) continue;
+        fit.add(u, weight_of_squared_ratio(s2));
+      }
       pseudo_normals_[i] = points_.normals[i];
       status[i] = fit.solve(points_.normals[i], pseudo_normals_[i]);
     }

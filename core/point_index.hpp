@@ -24,21 +24,30 @@ class PointIndex {
   std::size_t size() const { return ids_.size(); }
   double cell_size() const { return cells_ ? cells_->spacing() : 0.0; }
 
+  // The index cell holding x; cells are `cell_size()` wide.
+  IVec<D> cell_of(const Vec<D>& x) const { return cells_->cell_of(x); }
+
+  // Calls fn(id, position) for every point in the cells [lo, hi] (inclusive),
+  // in a fixed order (by cell, then by position in the index).
+  template <typename Fn>
+  void for_each_in_cells(const IVec<D>& lo, const IVec<D>& hi, Fn&& fn) const {
+    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
+      if (const Run* run = runs_.find(Grid<D>::key(c))) {
+        for (std::uint32_t k = run->begin; k < run->end; ++k) fn(ids_[k], positions_[k]);
+      }
+    });
+  }
+
   // Calls fn(id, position) for every indexed point p with |p - x| <= radius,
-  // in a fixed order (by cell, then by id).
+  // in the order of for_each_in_cells.
   template <typename Fn>
   void for_each_within(const Vec<D>& x, double radius, Fn&& fn) const {
     if (!cells_) return;
     const double r2 = radius * radius;
-    const IVec<D> lo = cells_->cell_of(x - Vec<D>::Constant(radius));
-    const IVec<D> hi = cells_->cell_of(x + Vec<D>::Constant(radius));
-    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
-      if (const Run* run = runs_.find(Grid<D>::key(c))) {
-        for (std::uint32_t k = run->begin; k < run->end; ++k) {
-          if ((positions_[k] - x).squaredNorm() <= r2) fn(ids_[k], positions_[k]);
-        }
-      }
-    });
+    for_each_in_cells(cells_->cell_of(x - Vec<D>::Constant(radius)), cells_->cell_of(x + Vec<D>::Constant(radius)),
+                      [&](std::uint32_t id, const Vec<D>& q) {
+                        if ((q - x).squaredNorm() <= r2) fn(id, q);
+                      });
   }
 
   // The index's order: position k of the cell-sorted arrays holds point

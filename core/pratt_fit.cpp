@@ -41,7 +41,8 @@ FitStatus PrattFit<D>::solve(const Vec<D>& carried, Vec<D>& normal) {
 
   // The neighbourhood must span a line (2D) or a plane (3D); otherwise the fit's
   // normal is not determined by the data.
-  const Eigen::SelfAdjointEigenSolver<Mat<D>> spread(scatter_, Eigen::EigenvaluesOnly);
+  Eigen::SelfAdjointEigenSolver<Mat<D>> spread;
+  spread.computeDirect(scatter_, Eigen::EigenvaluesOnly);
   const auto& ev = spread.eigenvalues();  // ascending
   if (!(ev[1] > kFlatness * ev[D - 1]) || !(ev[D - 1] > 0.0)) return FitStatus::degenerate;
 
