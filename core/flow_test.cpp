@@ -96,7 +96,7 @@ FlowTestRun<D> run_flow_test(const char* test, const FlowTestConfig& config, std
   DeformingSurface<D> surface(grid, parameters, config.variant, config.threads);
   surface.set_points(sample(0.5 * grid.spacing()));
   run_flow<D>(surface, std::move(field), period, config, progress, report);
-  finish(report, measure(surface.surface(), report));
+  finish(report, measure(surface.surface(), surface.pool(), report));
   return {report, final_points_of(surface)};
 }
 
@@ -108,8 +108,8 @@ FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress&
   auto sample = [&](double spacing) {
     return sample_circle(center, radius, static_cast<std::size_t>(std::ceil(2.0 * std::numbers::pi * radius / spacing)));
   };
-  auto measure = [&](const AmlsSurface<2>& surface, FlowTestReport& report) {
-    const CircleError error = circle_l1_error(surface, center, radius);
+  auto measure = [&](const AmlsSurface<2>& surface, ThreadPool& pool, FlowTestReport& report) {
+    const CircleError error = circle_l1_error(surface, center, radius, pool);
     report.l1_error = error.l1;
     return error.scan;
   };
@@ -123,8 +123,8 @@ FlowTestRun<3> run_enright_test(const FlowTestConfig& config, const FlowProgress
     const double area = 4.0 * std::numbers::pi * radius * radius;
     return sample_sphere(center, radius, static_cast<std::size_t>(std::ceil(area / (spacing * spacing))));
   };
-  auto measure = [&](const AmlsSurface<3>& surface, FlowTestReport& report) {
-    const SphereError error = sphere_volume_error(surface, center, radius);
+  auto measure = [&](const AmlsSurface<3>& surface, ThreadPool& pool, FlowTestReport& report) {
+    const SphereError error = sphere_volume_error(surface, center, radius, pool);
     report.volume_loss = (error.exact_volume - error.volume) / error.exact_volume;
     report.symmetric_difference = error.symmetric_difference;
     report.relative_symmetric_difference = error.symmetric_difference / error.exact_volume;

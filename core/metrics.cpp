@@ -126,7 +126,7 @@ enum class RayRule { exactly_once, odd };
 
 template <int D, typename Direction, typename Accumulate>
 RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size_t rays, RayRule rule,
-                  Direction&& direction, Accumulate&& accumulate) {
+                  ThreadPool& pool, Direction&& direction, Accumulate&& accumulate) {
   RayScan scan;
   scan.rays = rays;
   if (surface.points().empty()) {
@@ -137,9 +137,15 @@ RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size
   }
   const auto [r_lo, r_hi] = radial_range(surface, center);
   const double step = 0.5 * surface.grid().spacing();
+  // Rays are scanned in parallel and accumulated in order, so sums do not
+  // depend on the thread count.
+  std::vector<std::vector<double>> roots_of(rays);
+  pool.parallel_for(rays, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k)
+      roots_of[k] = crossings_along_ray(surface, center, direction(k), r_lo, r_hi, step);
+  });
   std::size_t none = 0, wrong = 0;
-  for (std::size_t k = 0; k < rays; ++k) {
-    const std::vector<double> roots = crossings_along_ray(surface, center, direction(k), r_lo, r_hi, step);
+  for (const std::vector<double>& roots : roots_of) {
     const bool good = rule == RayRule::exactly_once ? roots.size() == 1 : roots.size() % 2 == 1;
     if (good) {
       accumulate(roots);
@@ -183,7 +189,8 @@ std::pair<double, double> radial_measures(const std::vector<double>& roots, doub
 
 }  // namespace
 
-CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius, std::size_t rays) {
+CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius, ThreadPool& pool,
+                            std::size_t rays) {
   CircleError out;
   const double dtheta = 2.0 * std::numbers::pi / static_cast<double>(rays);
   auto direction = [&](std::size_t k) {
@@ -191,13 +198,13 @@ CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center,
     return Vec<2>(std::cos(theta), std::sin(theta));
   };
   // Area between the curves in polar form: integral of |r^2 - R^2| / 2 d theta.
-  out.scan = scan_rays<2>(surface, center, rays, RayRule::exactly_once, direction, [&](const std::vector<double>& roots) {
+  out.scan = scan_rays<2>(surface, center, rays, RayRule::exactly_once, pool, direction, [&](const std::vector<double>& roots) {
     out.l1 += radial_measures<2>(roots, radius).second * dtheta;
   });
   return out;
 }
 
-SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius,
+SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius, ThreadPool& pool,
                                 std::size_t rays) {
   SphereError out;
   const double solid_angle = 4.0 * std::numbers::pi / static_cast<double>(rays);
@@ -209,7 +216,7 @@ SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& cen
     return Vec<3>(s * std::cos(phi), s * std::sin(phi), z);
   };
   // Volumes in spherical form: integrals of r^2 dr d omega.
-  out.scan = scan_rays<3>(surface, center, rays, RayRule::odd, direction, [&](const std::vector<double>& roots) {
+  out.scan = scan_rays<3>(surface, center, rays, RayRule::odd, pool, direction, [&](const std::vector<double>& roots) {
     const auto [inside, difference] = radial_measures<3>(roots, radius);
     out.volume += inside * solid_angle;
     out.symmetric_difference += difference * solid_angle;

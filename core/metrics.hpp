@@ -52,7 +52,7 @@ struct CircleError {
   RayScan scan;
   double l1 = 0.0;
 };
-CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius,
+CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius, ThreadPool& pool,
                             std::size_t rays = 16384);
 
 // 3D: the enclosed volume and its symmetric difference with the sphere
@@ -63,7 +63,7 @@ struct SphereError {
   double exact_volume = 0.0;
   double symmetric_difference = 0.0;
 };
-SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius,
+SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius, ThreadPool& pool,
                                 std::size_t rays = 20000);
 
 }  // namespace amls

@@ -45,7 +45,7 @@ TEST_CASE("a short Enright run conserves the enclosed volume") {
   Vec<3> centroid = Vec<3>::Zero();
   for (const auto& p : surface.points().positions) centroid += p;
   centroid /= static_cast<double>(surface.points().size());
-  const SphereError e = sphere_volume_error(surface.surface(), centroid, 0.15, 4000);
+  const SphereError e = sphere_volume_error(surface.surface(), centroid, 0.15, pool, 4000);
   CHECK(e.scan.closed);
   CHECK(std::abs(e.volume - e.exact_volume) / e.exact_volume < 0.01);
 }

@@ -2,6 +2,7 @@
 
 #include "core/metrics.hpp"
 #include "core/shapes.hpp"
+#include "surface_fixtures.hpp"
 
 using namespace amls;
 
@@ -17,4 +18,38 @@ TEST_CASE("metrics: nearest distances between two sets, in units of h") {
   const std::vector<double> spacings = nearest_neighbour_spacings(circle, 0.01);
   CHECK(spacings.size() == 400);
   CHECK(spacing_stats_of(spacings).median == doctest::Approx(2.0 * std::sin(3.14159265358979 / 400) / 0.01));
+}
+
+TEST_CASE("metrics: the L1 error of a sampled circle against a concentric circle is the annulus area") {
+  ThreadPool pool(2);
+  const Vec<2> c(0.5, 0.5);
+  const auto s = amls::test::ready_surface(sample_circle(c, 0.2, 300), Grid<2>::unit(128), pool);
+  const CircleError same = circle_l1_error(s, c, 0.2, pool, 4096);
+  CHECK(same.scan.closed);
+  CHECK(same.l1 < 1e-9);
+  const CircleError wider = circle_l1_error(s, c, 0.21, pool, 4096);
+  CHECK(wider.l1 == doctest::Approx(M_PI * (0.21 * 0.21 - 0.2 * 0.2)).epsilon(1e-6));
+}
+
+TEST_CASE("metrics: the volume of a sampled sphere, and its symmetric difference with a smaller one") {
+  ThreadPool pool(2);
+  const Vec<3> c(0.5, 0.5, 0.5);
+  const auto s = amls::test::ready_surface(sample_sphere(c, 0.2, 6000), Grid<3>::unit(64), pool);
+  const SphereError e = sphere_volume_error(s, c, 0.18, pool, 2000);
+  CHECK(e.scan.closed);
+  const double v = 4.0 / 3.0 * M_PI * 0.2 * 0.2 * 0.2;
+  CHECK(e.volume == doctest::Approx(v).epsilon(1e-6));
+  CHECK(e.symmetric_difference == doctest::Approx(v - e.exact_volume).epsilon(1e-6));
+}
+
+TEST_CASE("metrics: a curve with a gap is not one closed curve") {
+  ThreadPool pool(1);
+  PointSet<2> arc = sample_circle(Vec<2>(0.5, 0.5), 0.2, 300);
+  arc.positions.resize(200);  // two thirds of the circle
+  arc.normals.resize(200);
+  const auto s = amls::test::ready_surface(std::move(arc), Grid<2>::unit(128), pool);
+  const CircleError e = circle_l1_error(s, Vec<2>(0.5, 0.5), 0.2, pool, 1024);
+  CHECK_FALSE(e.scan.closed);
+  CHECK(e.scan.bad_rays > 100);
+  CHECK_FALSE(e.scan.reason.empty());
 }
