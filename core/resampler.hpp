@@ -51,6 +51,9 @@ class Resampler {
   PointSet<D> resample(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
   const ResampleStats& stats() const { return stats_; }
+  // Vertex slots allocated (whole bricks of 4^D): what the vertex data cost,
+  // proportional to the surface, not to the grid's volume.
+  std::size_t vertex_slots() const { return field_.slots(); }
 
   // The value of F cached at a vertex by the last update_function(), if any.
   const Evaluation<D>* vertex_value(const IVec<D>& vertex) const;

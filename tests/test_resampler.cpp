@@ -98,3 +98,17 @@ TEST_CASE("a surface through grid vertices gives exactly one point per vertex") 
   std::sort(xs.begin(), xs.end());
   CHECK(std::adjacent_find(xs.begin(), xs.end()) == xs.end());
 }
+
+TEST_CASE("memory follows the surface: a small sphere on a 2048^3 grid touches few vertices") {
+  ThreadPool pool(2);
+  const Grid<3> grid = Grid<3>::unit(2048);
+  const auto surface = ready_surface(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.01, 5000), grid, pool);
+  Resampler<3> resampler;
+  resampler.update_function(surface, pool);
+  const PointSet<3> out = resampler.resample(surface, Variant::exact, pool);
+  CHECK(out.size() > 3000);
+  // About 7 vertices per point, in bricks of 64: a few hundred thousand slots
+  // at most, i.e. a few tens of MiB, against 8.6e9 vertices in the grid.
+  CHECK(resampler.stats().vertices < 20 * surface.points().size());
+  CHECK(resampler.vertex_slots() < 500000);
+}
