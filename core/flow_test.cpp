@@ -36,6 +36,7 @@ void run_flow(DeformingSurface<D>& surface, std::shared_ptr<const VelocityField<
     const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
     const StepStats stats = surface.step(flow, t0, t1);
     report.timings += stats.timings;
+    report.points_processed += stats.points_before;
     report.vertex_evaluations += stats.resample.vertices;
     report.crossings += stats.resample.crossings;
     report.root_evaluations += stats.resample.root_evaluations;

@@ -34,6 +34,7 @@ struct FlowTestReport {
   std::size_t points_initial = 0;
   std::size_t points_max = 0;
   std::size_t points_final = 0;
+  std::size_t points_processed = 0;  // points entering each step, summed over the steps
   SpacingStats spacing_h;  // of the final point set
   PhaseTimings timings;
   // Work done over the run: F evaluated at grid vertices, edges found crossing,

@@ -1,0 +1,68 @@
+// amls bench: the fixed benchmark suite, one table.
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "app/commands.hpp"
+#include "app/common_options.hpp"
+#include "app/flow_report.hpp"
+#include "core/bench_suite.hpp"
+
+namespace amls::app {
+
+namespace {
+
+struct BenchOptions {
+  int threads = 1;
+  std::string json_path;
+};
+
+nlohmann::json to_json(const BenchCase& c) {
+  const PhaseTimings& t = c.timings;
+  return {{"name", c.name},
+          {"points", c.points},
+          {"points_processed", c.points_processed},
+          {"points_per_second", c.points_per_second()},
+          {"timings_s",
+           {{"normals", t.normals}, {"function", t.function}, {"resample", t.resample}, {"deform", t.deform},
+            {"hash", t.hash}, {"total", t.total()}}},
+          {"peak_memory_mib", c.peak_memory_mib},
+          {"threads", c.threads},
+          {"result", c.result}};
+}
+
+void print_row(const BenchCase& c) {
+  const PhaseTimings& t = c.timings;
+  std::printf("%-28s %8zu %8.3f %8.3f %8.3f %8.3f %8.3f %9.3f %11.3g %8.1f  %s\n", c.name.c_str(), c.points,
+              t.normals, t.function, t.resample, t.deform, t.hash, t.total(), c.points_per_second(), c.peak_memory_mib,
+              c.result.c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench",
+      "the fixed benchmark suite: 2D vortex 512^2 exact and interpolated; one full step on 3D spheres of 50k, 200k "
+      "and 1M points; Enright 128^3. Prints seconds per phase, points per second and peak memory per case");
+  add_threads_option(*cmd, options->threads);
+  cmd->add_option("--json", options->json_path, R"(write {"cases": [...]} to this file)");
+  cmd->callback([options] {
+    std::printf("amls bench, %d thread%s, %u hardware threads\n", options->threads, options->threads == 1 ? "" : "s",
+                std::thread::hardware_concurrency());
+    std::printf("%-28s %8s %8s %8s %8s %8s %8s %9s %11s %8s  %s\n", "case", "points", "normals", "function",
+                "resample", "deform", "hash", "total s", "points/s", "peak MiB", "result");
+    // Rows are printed as each case finishes, so a long suite shows progress.
+    nlohmann::json cases = nlohmann::json::array();
+    run_bench_suite(options->threads, [&](const BenchCase& c) {
+      print_row(c);
+      cases.push_back(to_json(c));
+    });
+    if (!options->json_path.empty()) write_json_file(options->json_path, {{"cases", cases}});
+  });
+}
+
+}  // namespace amls::app

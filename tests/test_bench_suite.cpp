@@ -1,0 +1,23 @@
+#include <doctest/doctest.h>
+
+#include "core/bench_suite.hpp"
+#include "core/process_memory.hpp"
+
+using namespace amls;
+
+TEST_CASE("bench: one step on a sampled sphere keeps about the requested number of points and times every phase") {
+  const BenchCase c = bench_sphere_step(5000, 2);
+  CHECK(c.points > 3500);
+  CHECK(c.points < 7000);
+  CHECK(c.timings.normals > 0.0);
+  CHECK(c.timings.function > 0.0);
+  CHECK(c.timings.resample > 0.0);
+  CHECK(c.points_per_second() > 0.0);
+  CHECK(c.peak_memory_mib > 0.0);
+  CHECK(c.threads == 2);
+}
+
+TEST_CASE("bench: the peak-memory counter can be reset between cases") {
+  CHECK(reset_peak_memory());
+  CHECK(peak_memory_mib() > 0.0);
+}
