@@ -138,13 +138,18 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
     out.positions.push_back(q);
     out.normals.push_back(pseudo_normals_[id]);
   }
+  Vec<D> mean = Vec<D>::Zero();
+  for (const Vec<D>& n : out.normals) mean += n;
+  const double threshold = std::sqrt(0.5) * mean.norm();  // cos 45 degrees, times |mean|
+  out.consistent = std::all_of(out.normals.begin(), out.normals.end(),
+                               [&](const Vec<D>& n) { return n.dot(mean) > threshold; });
 }
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
   const double r2 = radius_ * radius_;
   const std::size_t n = neighbourhood.positions.size();
-  const bool filter = parameters_.orientation_filter;
+  const bool filter = parameters_.orientation_filter && !neighbourhood.consistent;
   // The orientation reference: the pseudo-normal of the point nearest to y.
   // (Recomputing distances in the second pass is cheaper than storing them.)
   Vec<D> reference = Vec<D>::Zero();

@@ -40,6 +40,9 @@ template <int D>
 struct Neighbourhood {
   std::vector<Vec<D>> positions;
   std::vector<Vec<D>> normals;
+  // Every pair of normals agrees (all lie within 45 degrees of their mean), so
+  // the orientation filter would keep every point and can be skipped.
+  bool consistent = false;
 };
 
 struct NormalStats {

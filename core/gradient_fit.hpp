@@ -22,6 +22,7 @@ struct Evaluation {
   bool defined = false;
   double value = 0.0;              // F(x)
   Vec<D> gradient = Vec<D>::Zero();  // gradient of the fitted sphere at x
+  Vec<D> mean_normal = Vec<D>::Zero();  // weighted mean of the neighbours' normals: their orientation
 };
 
 template <int D>
@@ -50,6 +51,7 @@ class GradientFit {
     if (!(variance > 1e-14 * mean_dd)) return e;
     const double a = 0.5 * (sum_dn_ / sum_w_ - mean_d.dot(mean_n)) / variance;
     e.gradient = mean_n - 2.0 * a * mean_d;
+    e.mean_normal = mean_n;
     e.value = -(e.gradient.dot(mean_d) + a * mean_dd);
     e.defined = std::isfinite(e.value) && e.gradient.allFinite();
     return e;

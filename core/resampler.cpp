@@ -150,6 +150,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
       const double linear_t = f0.value / (f0.value - f1.value);
       x.t = linear_t;
       Vec<D> normal = (1.0 - linear_t) * f0.gradient + linear_t * f1.gradient;
+      Vec<D> orientation = (1.0 - linear_t) * f0.mean_normal + linear_t * f1.mean_normal;
 
       if (variant == Variant::exact) {
         const Vec<D> start = grid.vertex_position(field_.vertex_of(x.from));
@@ -178,11 +179,18 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         evaluations[static_cast<std::size_t>(block)] += static_cast<std::size_t>(root.evaluations);
         if (root.ok) {
           x.t = root.t;
-          if (root.t == best_t && best.gradient.squaredNorm() > 0.0) normal = best.gradient;
+          if (root.t == best_t && best.gradient.squaredNorm() > 0.0) {
+            normal = best.gradient;
+            orientation = best.mean_normal;
+          }
         } else {
           ++fallbacks[static_cast<std::size_t>(block)];
         }
       }
+      // The normal only orients the next fit, so its orientation must be the
+      // neighbours': where the fitted sphere's gradient turns against their
+      // mean normal (a sharp or badly sampled spot), the mean normal is used.
+      if (normal.dot(orientation) <= 0.0) normal = orientation;
       const double length = normal.norm();
       x.normal = length > 0.0 ? Vec<D>(normal / length) : Vec<D>::Unit(x.axis);
     }
