@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   amls::app::add_flow_test_commands(app);
   amls::app::add_deform_command(app);
   amls::app::add_resample_command(app);
+  amls::app::add_render_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
