@@ -143,14 +143,15 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
   } else {
     LoadedPointSet loaded = read_point_set(path, options.dimension);
     if (loaded.points.empty()) throw std::runtime_error(path + ": holds no points");
-    if (loaded.has_normals) require_drawable(loaded.points, path);
+    // Positions first: the spacing estimate and the normal estimation need them finite.
+    for (std::size_t i = 0; i < loaded.points.size(); ++i)
+      if (!loaded.points.positions[i].allFinite())
+        throw std::runtime_error(path + ": point " + std::to_string(i) + " has a non-finite position");
     double h = options.spacing;
     if (h == 0.0) {
-      for (std::size_t i = 0; i < loaded.points.size(); ++i)
-        if (!loaded.points.positions[i].allFinite())
-          throw std::runtime_error(path + ": point " + std::to_string(i) + " has a non-finite position");
       h = estimate_spacing<3>(loaded.points.positions);
-      if (!(h > 0.0)) throw std::runtime_error(path + ": all points coincide; give --spacing to draw them");
+      if (!(h > 0.0))
+        throw std::runtime_error(path + ": fewer than two distinct points, so no spacing to estimate; give --spacing");
     }
     picture.h = h;
     if (loaded.has_normals) {
