@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   amls::app::add_bench_command(app);
   amls::app::add_deform_command(app);
   amls::app::add_resample_command(app);
+  amls::app::add_render_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -28,13 +28,19 @@ double nearest_squared(const PointIndex<D>& index, const Vec<D>& p, double radiu
 }  // namespace
 
 template <int D>
-std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h) {
+std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h) {
   if (points.size() < 2) return {};
   PointIndex<D> index;
   index.build(points.positions, Vec<D>::Zero(), 2.0 * h);
   std::vector<double> nearest(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     nearest[i] = std::sqrt(nearest_squared(index, points.positions[i], 2.0 * h, static_cast<std::uint32_t>(i))) / h;
+  return nearest;
+}
+
+template <int D>
+std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h) {
+  std::vector<double> nearest = nearest_neighbour_spacing_per_point(points, h);
   std::sort(nearest.begin(), nearest.end());
   return nearest;
 }
@@ -76,6 +82,8 @@ template SpacingStats spacing_stats<2>(const PointSet<2>&, double);
 template SpacingStats spacing_stats<3>(const PointSet<3>&, double);
 template std::vector<double> nearest_neighbour_spacings<2>(const PointSet<2>&, double);
 template std::vector<double> nearest_neighbour_spacings<3>(const PointSet<3>&, double);
+template std::vector<double> nearest_neighbour_spacing_per_point<2>(const PointSet<2>&, double);
+template std::vector<double> nearest_neighbour_spacing_per_point<3>(const PointSet<3>&, double);
 template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
 template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
 

@@ -21,6 +21,9 @@ SpacingStats spacing_stats(const PointSet<D>& points, double h);
 // Every point's nearest-neighbour distance in units of h, sorted (empty for fewer than 2 points).
 template <int D>
 std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h);
+// The same in the points' order, one value per point (e.g. to colour each point by it).
+template <int D>
+std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h);
 SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
 
 // Distances from each point of one set to the nearest point of another, in units of h.

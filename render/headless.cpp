@@ -7,8 +7,42 @@
 
 namespace amls {
 
+namespace {
+
+constexpr int kMaxSupersample = 8;
+constexpr int kMaxImageSide = 16384;  // as OffscreenContext
+
+// Each pixel of the result is the mean of a factor x factor block of `large` (rounded to nearest).
+Image box_downsample(const Image& large, int factor) {
+  Image small;
+  small.width = large.width / factor;
+  small.height = large.height / factor;
+  small.rgba.resize(4 * static_cast<std::size_t>(small.width) * static_cast<std::size_t>(small.height));
+  const int count = factor * factor;
+  for (int y = 0; y < small.height; ++y)
+    for (int x = 0; x < small.width; ++x)
+      for (int c = 0; c < 4; ++c) {
+        int sum = 0;
+        for (int dy = 0; dy < factor; ++dy)
+          for (int dx = 0; dx < factor; ++dx) sum += large.pixel(x * factor + dx, y * factor + dy)[c];
+        small.rgba[4 * (static_cast<std::size_t>(y) * small.width + x) + c] =
+            static_cast<std::uint8_t>((sum + count / 2) / count);
+      }
+  return small;
+}
+
+}  // namespace
+
 Image render_offscreen(const RenderJob& job, const std::function<void(SplatRenderer&)>& fill) {
-  OffscreenContext context(job.width, job.height);
+  const int s = job.supersample;
+  if (s < 1 || s > kMaxSupersample)
+    throw std::invalid_argument("supersampling factor must be from 1 to " + std::to_string(kMaxSupersample) + ", got " +
+                                std::to_string(s));
+  if (job.width > 0 && job.height > 0 && (job.width > kMaxImageSide / s || job.height > kMaxImageSide / s))
+    throw std::invalid_argument("image " + std::to_string(job.width) + "x" + std::to_string(job.height) +
+                                " supersampled " + std::to_string(s) + " times exceeds " +
+                                std::to_string(kMaxImageSide) + " pixels a side");
+  OffscreenContext context(job.width * s, job.height * s);
   SplatRenderer renderer;
   fill(renderer);
   const BoundingSphere bounds = renderer.bounds();
@@ -18,8 +52,14 @@ Image render_offscreen(const RenderJob& job, const std::function<void(SplatRende
   const Viewport viewport = context.viewport();
   if (job.framing == Framing::fit) camera.fit(bounds, viewport.aspect());
   if (job.framing == Framing::center) camera.center_on(bounds);
-  renderer.draw(camera, viewport, job.options);
-  return read_framebuffer(viewport);
+  RenderOptions options = job.options;
+  const auto factor = static_cast<float>(s);
+  options.point_size_px *= factor;
+  options.handle_size_px *= factor;
+  options.line_width_px *= factor;
+  renderer.draw(camera, viewport, options);
+  const Image image = read_framebuffer(viewport);
+  return s == 1 ? image : box_downsample(image, s);
 }
 
 void render_to_png(const std::filesystem::path& png, const RenderJob& job,

@@ -24,10 +24,14 @@ struct RenderJob {
   std::optional<Camera> camera;
   Framing framing = Framing::fit;
   RenderOptions options;
+  // Anti-aliasing: the frame is drawn `supersample` times larger in each direction (pixel
+  // sizes in `options` scaled alike) and each output pixel is the mean of its s x s block.
+  // 1 draws directly, so that every pixel has an exact colour. From 1 to 8.
+  int supersample = 1;
 };
 
 // `fill` puts the scene into the renderer (points, scalars, curve, handles). Throws
-// std::invalid_argument for a bad size or an empty scene; see OffscreenContext and
+// std::invalid_argument for a bad size or supersampling factor, or an empty scene; see OffscreenContext and
 // SplatRenderer for the rest.
 Image render_offscreen(const RenderJob& job, const std::function<void(SplatRenderer&)>& fill);
 void render_to_png(const std::filesystem::path& png, const RenderJob& job,

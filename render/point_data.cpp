@@ -12,14 +12,6 @@ namespace amls {
 
 namespace {
 
-template <int D>
-glm::vec3 to_vec3(const Vec<D>& v) {
-  if constexpr (D == 2)
-    return {static_cast<float>(v[0]), static_cast<float>(v[1]), 0.0f};
-  else
-    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace

@@ -10,6 +10,15 @@
 
 namespace amls {
 
+// A core position or normal as a float vector for GL; 2D gets z = 0.
+template <int D>
+glm::vec3 to_vec3(const Vec<D>& v) {
+  if constexpr (D == 2)
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), 0.0f};
+  else
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
 struct PreparedPoints {
   int dimension = 3;
   // The drawable points as floats (2D sets get z = 0); normals are unit length.

@@ -6,6 +6,20 @@
 
 using namespace amls;
 
+TEST_CASE("metrics: per-point nearest-neighbour spacing stays with its point") {
+  // Three points on a line, 1 and 3 h apart, and a fourth 0.5 h from the last.
+  PointSet<2> points;
+  const double h = 0.1;
+  for (double x : {0.0, 0.1, 0.4, 0.45}) points.add(Vec<2>(x, 0.0), Vec<2>(0.0, 1.0));
+  const std::vector<double> s = nearest_neighbour_spacing_per_point(points, h);
+  REQUIRE(s.size() == 4);
+  CHECK(s[0] == doctest::Approx(1.0));
+  CHECK(s[1] == doctest::Approx(1.0));
+  CHECK(s[2] == doctest::Approx(0.5));
+  CHECK(s[3] == doctest::Approx(0.5));
+  CHECK(nearest_neighbour_spacing_per_point(PointSet<2>{}, h).empty());
+}
+
 TEST_CASE("metrics: nearest distances between two sets, in units of h") {
   const PointSet<2> circle = sample_circle(Vec<2>::Zero(), 1.0, 400);
   const PointSet<2> bigger = sample_circle(Vec<2>::Zero(), 1.1, 4000);
