@@ -16,6 +16,7 @@ namespace {
 struct FlowTestOptions {
   FlowTestConfig config;
   std::string variant = "exact";
+  std::string resample = "always";
   std::string json_path;
   std::string out_path;
 };
@@ -39,10 +40,15 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   cmd->add_option("--dt", options->config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("--substeps", options->config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
   add_threads_option(*cmd, options->config.threads);
+  cmd->add_option("--resample", options->resample,
+                  "when to resample: always (every dt, as the paper), auto (when the points' nearest-neighbour "
+                  "spacing leaves [0.25 h, 2 h]) or every:K")
+      ->capture_default_str();
   cmd->add_option("--json", options->json_path, "write the JSON report to this file");
   cmd->add_option("--out", options->out_path, "write the final point set to this file (.ply or .xyz)");
   cmd->callback([options, runner] {
     options->config.variant = parse_variant(options->variant);
+    options->config.resample = ResamplePolicy::parse(options->resample);
     // Check the output's extension before the run, not after it.
     const PointFileFormat format = options->out_path.empty() ? PointFileFormat::xyz
                                                              : format_from_extension(options->out_path);

@@ -20,6 +20,8 @@ nlohmann::json to_json(const FlowTestReport& r) {
   j["substeps"] = r.config.substeps;
   j["steps"] = r.steps;
   j["steps_planned"] = r.steps_planned;
+  j["resample"] = r.config.resample.to_string();
+  j["resamples"] = r.resamples;
   j["threads"] = r.config.threads;
   j["status"] = r.broken ? "broken" : "ok";
   j["status_reason"] = r.status_reason;
@@ -46,9 +48,10 @@ nlohmann::json to_json(const FlowTestReport& r) {
 void print_table(std::ostream& out, const FlowTestReport& r) {
   char line[160];
   const auto& c = r.config;
-  std::snprintf(line, sizeof line, "%s test, %d^%d grid, %s, Delta = %gh, dt = %g, %zu/%zu steps, %d thread%s\n",
+  std::snprintf(line, sizeof line,
+                "%s test, %d^%d grid, %s, Delta = %gh, dt = %g, %zu/%zu steps, %zu resamples (%s), %d thread%s\n",
                 r.test.c_str(), c.grid, r.dimension, to_string(c.variant), c.radius_factor, c.dt, r.steps,
-                r.steps_planned, c.threads, c.threads == 1 ? "" : "s");
+                r.steps_planned, r.resamples, c.resample.to_string().c_str(), c.threads, c.threads == 1 ? "" : "s");
   out << line;
   const double total = r.timings.total();
   auto row = [&](const char* name, double seconds) {

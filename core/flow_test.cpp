@@ -34,7 +34,9 @@ void run_flow(DeformingSurface<D>& surface, std::shared_ptr<const VelocityField<
   for (std::size_t k = 0; k < report.steps_planned; ++k) {
     const double t0 = period * static_cast<double>(k) / static_cast<double>(report.steps_planned);
     const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
-    const StepStats stats = surface.step(flow, t0, t1);
+    const bool resample = config.resample.resample_now(k, surface.points(), surface.surface().grid().spacing());
+    const StepStats stats = surface.step(flow, t0, t1, resample);
+    report.resamples += resample ? 1 : 0;
     report.timings += stats.timings;
     report.points_processed += stats.points_before;
     report.vertex_evaluations += stats.resample.vertices;

@@ -10,6 +10,7 @@
 
 #include "core/deforming_surface.hpp"
 #include "core/metrics.hpp"
+#include "core/resample_policy.hpp"
 
 namespace amls {
 
@@ -21,6 +22,7 @@ struct FlowTestConfig {
   double dt = 0.01;
   int substeps = 1;
   int threads = 1;
+  ResamplePolicy resample;
 };
 
 struct FlowTestReport {
@@ -28,6 +30,7 @@ struct FlowTestReport {
   int dimension = 2;
   FlowTestConfig config;
   std::size_t steps = 0;  // steps done (fewer than planned if the run broke)
+  std::size_t resamples = 0;  // steps that resampled (all of them under --resample always)
   std::size_t steps_planned = 0;
   bool broken = false;
   std::string status_reason;
