@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/metrics.hpp"
 #include "core/resampler.hpp"
 #include "core/shapes.hpp"
 #include "surface_fixtures.hpp"
@@ -9,6 +10,7 @@
 using namespace amls;
 using amls::test::nearest_neighbour_distances;
 using amls::test::ready_surface;
+using amls::test::widest_circle_gap;
 
 namespace {
 
@@ -21,7 +23,7 @@ PointSet<D> resample_once(const AmlsSurface<D>& surface, Variant variant, Thread
 
 }  // namespace
 
-TEST_CASE("exact resampling of a circle puts every new point on F = 0, well spaced") {
+TEST_CASE("exact resampling of a circle puts every new point on F = 0, well spaced, with no gap wider than 2 h") {
   ThreadPool pool(2);
   const Grid<2> grid = Grid<2>::unit(128);
   const double h = grid.spacing();
@@ -40,9 +42,10 @@ TEST_CASE("exact resampling of a circle puts every new point on F = 0, well spac
   const auto nn = nearest_neighbour_distances<2>(out.positions);
   CHECK(*std::min_element(nn.begin(), nn.end()) > 0.25 * h);
   CHECK(*std::max_element(nn.begin(), nn.end()) < 2.0 * h);
+  CHECK(widest_circle_gap(out.positions, center, 0.15) < 2.0 * h);  // as for the ray tracer
 }
 
-TEST_CASE("exact resampling of a sphere puts every new point on the sphere, well spaced") {
+TEST_CASE("exact resampling of a sphere puts every new point on the sphere, well spaced, with no hole") {
   ThreadPool pool(2);
   const Grid<3> grid = Grid<3>::unit(64);
   const double h = grid.spacing();
@@ -53,6 +56,9 @@ TEST_CASE("exact resampling of a sphere puts every new point on the sphere, well
   double worst = 0.0;
   for (std::size_t i = 0; i < out.size(); ++i) worst = std::max(worst, std::abs((out.positions[i] - center).norm() - 0.15));
   CHECK(worst < 1e-9);
+  // No hole: every place on the sphere lies within 1.25 h of a new point (as for the ray tracer).
+  const PointSet<3> probes = sample_sphere(center, 0.15, 20000);
+  CHECK(nearest_distance_stats<3>(probes.positions, out.positions, h).max < 1.25);
   const auto nn = nearest_neighbour_distances<3>(out.positions);
   CHECK(*std::min_element(nn.begin(), nn.end()) > 0.25 * h);
   CHECK(*std::max_element(nn.begin(), nn.end()) < 2.0 * h);
