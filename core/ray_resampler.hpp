@@ -16,9 +16,10 @@
 //
 // The points whose chords make up an interval are exactly the points that can
 // reach any place in it, so no neighbour query is needed there: F at a sample is
-// evaluated over the chords that overlap the sample's cell (widened by one
-// sample step back, so that a bracket ending in the cell is covered too),
-// selected once per cell from the interval's chords sorted by start.
+// evaluated over the chords that overlap a window of two cells around it
+// (widened by one sample step back, so that a bracket ending in the window is
+// covered too), selected once per window from the interval's chords sorted by
+// start.
 //
 // Rays on different axes cross the surface at nearby places, so candidates come
 // in clusters; Remove_Clusters keeps, in candidate order (axis, line, position

@@ -16,6 +16,14 @@ RayPhaseTimings& RayPhaseTimings::operator+=(const RayPhaseTimings& o) {
   return *this;
 }
 
+PhaseTimes RayPhaseTimings::phases() const {
+  return {{"deform", deform},
+          {"remove_clusters", remove_clusters},
+          {"rebuild_tree", rebuild_tree},
+          {"intersections", intersections},
+          {"normals", normals}};
+}
+
 template <int D>
 RayTracingSurface<D>::RayTracingSurface(const Grid<D>& grid, const AmlsParameters& parameters,
                                         const RaySettings& settings, int threads)
@@ -104,6 +112,15 @@ RayStepStats RayTracingSurface<D>::resample_only() {
 template <int D>
 NormalStats RayTracingSurface<D>::refresh_normals() {
   return update_normals();
+}
+
+template <int D>
+AmlsSurface<D> RayTracingSurface<D>::amls_surface() {
+  AmlsSurface<D> surface(definition_.grid(), definition_.parameters());
+  surface.set_points(points_);
+  surface.hash_points();
+  surface.update_normals(pool_);
+  return surface;
 }
 
 template class RayTracingSurface<2>;

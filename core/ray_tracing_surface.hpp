@@ -10,6 +10,7 @@
 #include "core/amls_surface.hpp"
 #include "core/deformation.hpp"
 #include "core/kd_tree.hpp"
+#include "core/phase_times.hpp"
 #include "core/ray_resampler.hpp"
 
 namespace amls {
@@ -23,6 +24,8 @@ struct RayPhaseTimings {
   double normals = 0.0;
   double total() const { return deform + remove_clusters + rebuild_tree + intersections + normals; }
   RayPhaseTimings& operator+=(const RayPhaseTimings& o);
+  // deform, remove_clusters, rebuild_tree, intersections, normals: Table 1's rows.
+  PhaseTimes phases() const;
 };
 
 struct RayStepStats {
@@ -49,6 +52,10 @@ class RayTracingSurface {
   RayStepStats resample_only();
   // Recomputes the pseudo-normals of the current points.
   NormalStats refresh_normals();
+  // S(P) of the current points as the grid-based loop builds it (hashed, with
+  // its own pseudo-normals): the same surface by the same code, so that results
+  // are measured alike whichever loop made them.
+  AmlsSurface<D> amls_surface();
 
   const PointSet<D>& points() const { return points_; }
   // Valid after refresh_normals() or a step's normals phase, until the points move.
