@@ -84,13 +84,15 @@ void RayTracingSurface<D>::resample_phases(RayStepStats& stats) {
 }
 
 template <int D>
-RayStepStats RayTracingSurface<D>::step(const Deformation<D>& deformation, double t0, double t1) {
+RayStepStats RayTracingSurface<D>::run_step(const Deformation<D>* deformation, double t0, double t1) {
   RayStepStats stats;
   stats.points_before = points_.size();
   resample_phases(stats);
   Stopwatch clock;
-  deformation.deform(points_, t0, t1, pool_);
-  stats.timings.deform = clock.lap();
+  if (deformation) {
+    deformation->deform(points_, t0, t1, pool_);
+    stats.timings.deform = clock.lap();
+  }
   tree_.build(points_.positions);
   stats.timings.rebuild_tree = clock.lap();
   stats.points_after = points_.size();
@@ -98,15 +100,13 @@ RayStepStats RayTracingSurface<D>::step(const Deformation<D>& deformation, doubl
 }
 
 template <int D>
+RayStepStats RayTracingSurface<D>::step(const Deformation<D>& deformation, double t0, double t1) {
+  return run_step(&deformation, t0, t1);
+}
+
+template <int D>
 RayStepStats RayTracingSurface<D>::resample_only() {
-  RayStepStats stats;
-  stats.points_before = points_.size();
-  resample_phases(stats);
-  Stopwatch clock;
-  tree_.build(points_.positions);
-  stats.timings.rebuild_tree = clock.lap();
-  stats.points_after = points_.size();
-  return stats;
+  return run_step(nullptr, 0.0, 0.0);
 }
 
 template <int D>

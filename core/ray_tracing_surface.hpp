@@ -67,6 +67,8 @@ class RayTracingSurface {
  private:
   NormalStats update_normals();
   void resample_phases(RayStepStats& stats);
+  // Resampling, then the deformation (if any) and the tree rebuilt.
+  RayStepStats run_step(const Deformation<D>* deformation, double t0, double t1);
 
   AmlsSurface<D> definition_;  // F's definition (grid, Delta, parameters); holds no points
   PointSet<D> points_;
