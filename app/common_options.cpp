@@ -12,10 +12,12 @@ void add_threads_option(CLI::App& cmd, int& threads) {
 
 void add_variant_option(CLI::App& cmd, std::string& variant, bool ray_tracing) {
   std::vector<std::string> names{"exact", "interpolated"};
-  std::string help = "resampler: exact (roots of F on grid edges), interpolated (zeros of the linear interpolant)";
+  std::string help = "resampler: exact (roots of F on grid edges)";
   if (ray_tracing) {
     names.push_back("raytrace");
-    help += " or raytrace (the ray-tracing baseline of Gois et al. 2008)";
+    help += ", interpolated (zeros of the linear interpolant) or raytrace (the ray-tracing baseline of Gois et al. 2008)";
+  } else {
+    help += " or interpolated (zeros of the linear interpolant)";
   }
   cmd.add_option("--variant", variant, help)->check(CLI::IsMember(names))->capture_default_str();
 }
