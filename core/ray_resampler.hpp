@@ -98,8 +98,9 @@ class RayResampler {
     double hi = 0.0;
     std::uint32_t id = 0;
   };
-  // Per thread block, reused from call to call.
-  struct Scratch {
+  // Per thread block, reused from call to call; a cache line apart, so that
+  // threads growing their vectors do not write to each other's lines.
+  struct alignas(64) Scratch {
     std::vector<Chord> chords;
     std::vector<std::uint32_t> active;  // chords that overlap the current cell's window
     Neighbourhood<D> neighbourhood;

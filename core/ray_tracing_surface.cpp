@@ -46,11 +46,10 @@ NormalStats RayTracingSurface<D>::update_normals() {
   const double radius = definition_.radius();
   pseudo_normals_.resize(n);
   status_.resize(n);
-  near_.resize(static_cast<std::size_t>(pool_.threads()));
-  neighbourhoods_.resize(near_.size());
+  normal_scratch_.resize(static_cast<std::size_t>(pool_.threads()));
   pool_.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
-    std::vector<std::uint32_t>& near = near_[static_cast<std::size_t>(block)];
-    Neighbourhood<D>& neighbourhood = neighbourhoods_[static_cast<std::size_t>(block)];
+    std::vector<std::uint32_t>& near = normal_scratch_[static_cast<std::size_t>(block)].near;
+    Neighbourhood<D>& neighbourhood = normal_scratch_[static_cast<std::size_t>(block)].neighbourhood;
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points_.positions[i];
       near.clear();

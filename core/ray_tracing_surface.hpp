@@ -76,9 +76,13 @@ class RayTracingSurface {
   KdTree<D> tree_;
   RayResampler<D> resampler_;
   ThreadPool pool_;
-  // Per thread block: a neighbour query's ids and the neighbourhood they make.
-  std::vector<std::vector<std::uint32_t>> near_;
-  std::vector<Neighbourhood<D>> neighbourhoods_;
+  // Per thread block, a cache line apart: a neighbour query's ids and the
+  // neighbourhood they make.
+  struct alignas(64) NormalScratch {
+    std::vector<std::uint32_t> near;
+    Neighbourhood<D> neighbourhood;
+  };
+  std::vector<NormalScratch> normal_scratch_;
   std::vector<FitStatus> status_;
 };
 
