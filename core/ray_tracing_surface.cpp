@@ -83,13 +83,14 @@ void RayTracingSurface<D>::resample_phases(RayStepStats& stats) {
 }
 
 template <int D>
-RayStepStats RayTracingSurface<D>::run_step(const Deformation<D>* deformation, double t0, double t1) {
+RayStepStats RayTracingSurface<D>::run_step(bool resample, const Deformation<D>* deformation, double t0, double t1) {
   RayStepStats stats;
   stats.points_before = points_.size();
-  resample_phases(stats);
+  if (resample) resample_phases(stats);
   Stopwatch clock;
   if (deformation) {
     deformation->deform(points_, t0, t1, pool_);
+    pseudo_normals_.clear();  // of the points before they moved
     stats.timings.deform = clock.lap();
   }
   tree_.build(points_.positions);
@@ -99,13 +100,13 @@ RayStepStats RayTracingSurface<D>::run_step(const Deformation<D>* deformation, d
 }
 
 template <int D>
-RayStepStats RayTracingSurface<D>::step(const Deformation<D>& deformation, double t0, double t1) {
-  return run_step(&deformation, t0, t1);
+RayStepStats RayTracingSurface<D>::step(const Deformation<D>& deformation, double t0, double t1, bool resample) {
+  return run_step(resample, &deformation, t0, t1);
 }
 
 template <int D>
 RayStepStats RayTracingSurface<D>::resample_only() {
-  return run_step(nullptr, 0.0, 0.0);
+  return run_step(true, nullptr, 0.0, 0.0);
 }
 
 template <int D>

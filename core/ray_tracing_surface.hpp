@@ -45,9 +45,10 @@ class RayTracingSurface {
   // Replaces the point set (positions with oriented normals) and builds the tree.
   void set_points(PointSet<D> points);
 
-  // One step: normals, intersections and cluster removal (the new point set),
-  // then the deformation of the new points from t0 to t1 and the tree rebuilt.
-  RayStepStats step(const Deformation<D>& deformation, double t0, double t1);
+  // One step: normals, intersections and cluster removal (the new point set;
+  // skipped if `resample` is false, as in DeformingSurface::step), then the
+  // deformation of the points from t0 to t1 and the tree rebuilt.
+  RayStepStats step(const Deformation<D>& deformation, double t0, double t1, bool resample = true);
   // Resamples the current surface in place, with no deformation.
   RayStepStats resample_only();
   // Recomputes the pseudo-normals of the current points.
@@ -67,8 +68,8 @@ class RayTracingSurface {
  private:
   NormalStats update_normals();
   void resample_phases(RayStepStats& stats);
-  // Resampling, then the deformation (if any) and the tree rebuilt.
-  RayStepStats run_step(const Deformation<D>* deformation, double t0, double t1);
+  // Resampling (if asked), then the deformation (if any) and the tree rebuilt.
+  RayStepStats run_step(bool resample, const Deformation<D>* deformation, double t0, double t1);
 
   AmlsSurface<D> definition_;  // F's definition (grid, Delta, parameters); holds no points
   PointSet<D> points_;

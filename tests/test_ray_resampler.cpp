@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/flow_deformation.hpp"
 #include "core/ray_resampler.hpp"
 #include "core/ray_tracing_surface.hpp"
 #include "core/shapes.hpp"
@@ -106,6 +107,20 @@ TEST_CASE("the ray-tracing loop's pseudo-normals (k-d tree neighbours) are AmlsS
     const auto j = static_cast<std::size_t>(it - points.positions.begin());
     CHECK((ray.pseudo_normals()[j] - surface.pseudo_normals()[i]).norm() < 1e-12);
   }
+}
+
+TEST_CASE("a ray-tracing step without resampling only deforms the points") {
+  const Grid<2> grid = Grid<2>::unit(64);
+  RayTracingSurface<2> surface(grid, AmlsParameters{}, RaySettings{}, 1);
+  surface.set_points(sample_circle(Vec<2>(0.5, 0.5), 0.2, 100));
+  const FlowDeformation<2> shift(std::make_shared<RigidRotation<2>>(Vec<2>(0.5, 0.5), 1.0), 1);
+  const RayStepStats stats = surface.step(shift, 0.0, 0.1, false);
+  CHECK(stats.points_after == 100);
+  CHECK(stats.resample.crossings == 0);
+  CHECK(stats.timings.intersections == 0.0);
+  CHECK(surface.points().positions.front() != sample_circle(Vec<2>(0.5, 0.5), 0.2, 100).positions.front());
+  const RayStepStats resampled = surface.step(shift, 0.1, 0.2);
+  CHECK(resampled.resample.crossings > 0);
 }
 
 TEST_CASE("ray-tracing settings are checked") {
