@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/flat_hash_map.hpp"
 #include "core/segment_root.hpp"
 
 namespace amls {
@@ -87,8 +86,8 @@ void RayResampler<D>::cut_rays(const Grid<D>& grid, double radius, std::span<con
     if (!positions[i].allFinite() || !grid.contains_with_margin(positions[i], margin))
       throw std::invalid_argument("point " + std::to_string(i) + " is not finite or too far from the grid's origin");
   }
-  FlatHashMap<std::uint32_t> lines(positions.size() * 4);
-  std::vector<std::uint64_t> keys;
+  FlatHashMap<std::uint32_t>& lines = lines_;
+  std::vector<std::uint64_t>& keys = line_keys_;
   for (int axis = 0; axis < D; ++axis) {
     lines.clear();
     for (const Vec<D>& p : positions)

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "core/amls_surface.hpp"
+#include "core/flat_hash_map.hpp"
 #include "core/kd_tree.hpp"
 
 namespace amls {
@@ -117,7 +118,8 @@ class RayResampler {
   RaySettings settings_;
   std::vector<Ray> rays_;
   std::vector<std::uint32_t> line_points_;  // per ray, the points whose balls cut it, in point order
-  std::vector<std::uint32_t> line_counts_;  // per line of one axis's bounding box (counting sort)
+  FlatHashMap<std::uint32_t> lines_;        // one axis's lines: count, then start, then fill cursor
+  std::vector<std::uint64_t> line_keys_;    // one axis's lines, sorted
   std::vector<Scratch> scratch_;
   PointSet<D> candidates_;
   KdTree<D> candidate_tree_;
