@@ -19,24 +19,24 @@ struct BenchOptions {
 };
 
 nlohmann::json to_json(const BenchCase& c) {
-  const PhaseTimings& t = c.timings;
+  nlohmann::json timings = nlohmann::json::object();
+  for (const PhaseTime& p : c.timings) timings[p.phase] = p.seconds;
+  timings["total"] = total_seconds(c.timings);
   return {{"name", c.name},
           {"points", c.points},
           {"points_processed", c.points_processed},
           {"points_per_second", c.points_per_second()},
-          {"timings_s",
-           {{"normals", t.normals}, {"function", t.function}, {"resample", t.resample}, {"deform", t.deform},
-            {"hash", t.hash}, {"total", t.total()}}},
+          {"timings_s", timings},
           {"peak_memory_mib", c.peak_memory_mib},
           {"threads", c.threads},
           {"result", c.result}};
 }
 
 void print_row(const BenchCase& c) {
-  const PhaseTimings& t = c.timings;
+  const PhaseTimes& t = c.timings;
   std::printf("%-28s %8zu %8.3f %8.3f %8.3f %8.3f %8.3f %9.3f %11.3g %8.1f  %s\n", c.name.c_str(), c.points,
-              t.normals, t.function, t.resample, t.deform, t.hash, t.total(), c.points_per_second(), c.peak_memory_mib,
-              c.result.c_str());
+              seconds_of(t, "normals"), seconds_of(t, "function"), seconds_of(t, "resample"), seconds_of(t, "deform"),
+              seconds_of(t, "hash"), total_seconds(t), c.points_per_second(), c.peak_memory_mib, c.result.c_str());
   std::fflush(stdout);
 }
 

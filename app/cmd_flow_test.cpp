@@ -31,14 +31,8 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   options->config.grid = default_grid;
   CLI::App* cmd = app.add_subcommand(name, description);
   cmd->add_option("--grid", options->config.grid, "cells per unit length: h = 1/N")->capture_default_str();
-  add_variant_option(*cmd, options->variant);
-  add_radius_factor_option(*cmd, options->config.radius_factor);
-  cmd->add_option("--min-weight", options->config.min_weight,
-                  "F is undefined where the neighbours' weights sum to less than this")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_option("--dt", options->config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
-  cmd->add_option("--substeps", options->config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
+  add_variant_option(*cmd, options->variant, true);
+  add_flow_test_options(*cmd, options->config);
   add_threads_option(*cmd, options->config.threads);
   cmd->add_option("--resample", options->resample,
                   "when to resample: always (every dt, as the paper), auto (when the points' nearest-neighbour "
@@ -47,7 +41,7 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   cmd->add_option("--json", options->json_path, "write the JSON report to this file");
   cmd->add_option("--out", options->out_path, "write the final point set to this file (.ply or .xyz)");
   cmd->callback([options, runner] {
-    options->config.variant = parse_variant(options->variant);
+    options->config.variant = parse_flow_variant(options->variant);
     options->config.resample = ResamplePolicy::parse(options->resample);
     // Check the output's extension before the run, not after it.
     const PointFileFormat format = options->out_path.empty() ? PointFileFormat::xyz

@@ -4,6 +4,7 @@
 
 namespace amls::app {
 
+void add_compare_command(CLI::App& app);
 void add_deform_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_flow_test_commands(CLI::App& app);

@@ -1,5 +1,7 @@
 #include "app/common_options.hpp"
 
+#include <vector>
+
 namespace amls::app {
 
 void add_threads_option(CLI::App& cmd, int& threads) {
@@ -8,16 +10,38 @@ void add_threads_option(CLI::App& cmd, int& threads) {
       ->capture_default_str();
 }
 
-void add_variant_option(CLI::App& cmd, std::string& variant) {
-  cmd.add_option("--variant", variant,
-                 "resampler: exact (roots of F on grid edges) or interpolated (zeros of the linear interpolant)")
-      ->check(CLI::IsMember({"exact", "interpolated"}))
-      ->capture_default_str();
+void add_variant_option(CLI::App& cmd, std::string& variant, bool ray_tracing) {
+  std::vector<std::string> names{"exact", "interpolated"};
+  std::string help = "resampler: exact (roots of F on grid edges)";
+  if (ray_tracing) {
+    names.push_back("raytrace");
+    help += ", interpolated (zeros of the linear interpolant) or raytrace (the ray-tracing baseline of Gois et al. 2008)";
+  } else {
+    help += " or interpolated (zeros of the linear interpolant)";
+  }
+  cmd.add_option("--variant", variant, help)->check(CLI::IsMember(names))->capture_default_str();
 }
 
 void add_radius_factor_option(CLI::App& cmd, double& radius_factor) {
   cmd.add_option("--radius-factor", radius_factor, "influence radius Delta in units of h")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config) {
+  add_radius_factor_option(cmd, config.radius_factor);
+  cmd.add_option("--min-weight", config.min_weight, "F is undefined where the neighbours' weights sum to less than this")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--dt", config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd.add_option("--substeps", config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd.add_option("--ray-samples", config.ray.samples_per_cell,
+                 "raytrace: samples of F per cell along each ray (2: every h/2)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd.add_option("--cluster-threshold", config.ray.cluster_threshold,
+                 "raytrace: candidates closer than this many h to a kept one are removed")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 }
 

@@ -4,10 +4,18 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "core/flow_test.hpp"
+
 namespace amls::app {
 
 void add_threads_option(CLI::App& cmd, int& threads);
-void add_variant_option(CLI::App& cmd, std::string& variant);
+// --variant: exact or interpolated (the grid walk); with `ray_tracing`, also
+// raytrace (the ray-tracing baseline, for the flow tests).
+void add_variant_option(CLI::App& cmd, std::string& variant, bool ray_tracing = false);
 void add_radius_factor_option(CLI::App& cmd, double& radius_factor);
+// The options of a flow test's configuration other than --grid, --variant and
+// --threads: --radius-factor, --min-weight, --dt, --substeps and the ray
+// tracer's --ray-samples and --cluster-threshold.
+void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config);
 
 }  // namespace amls::app

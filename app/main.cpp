@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "amls 0.1.0");
   amls::app::add_flow_test_commands(app);
+  amls::app::add_compare_command(app);
   amls::app::add_bench_command(app);
   amls::app::add_deform_command(app);
   amls::app::add_resample_command(app);

@@ -78,14 +78,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     }
   });
   NormalStats stats;
-  for (FitStatus s : status) {
-    switch (s) {
-      case FitStatus::ok: ++stats.ok; break;
-      case FitStatus::too_few_neighbours: ++stats.too_few_neighbours; break;
-      case FitStatus::degenerate: ++stats.degenerate; break;
-      case FitStatus::no_solution: ++stats.no_solution; break;
-    }
-  }
+  for (FitStatus s : status) stats.count(s);
   ready_ = true;
   return stats;
 }
@@ -172,6 +165,20 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
     fit.add(d, neighbourhood.normals[k], w);
   }
   return fit.solve(parameters_.min_weight);
+}
+
+template <int D>
+FitStatus AmlsSurface<D>::pseudo_normal_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p,
+                                          const Vec<D>& carried, Vec<D>& normal) const {
+  const double inverse_radius = 1.0 / radius_;
+  const bool filter = parameters_.orientation_filter;
+  PrattFit<D> fit;
+  for (std::size_t k = 0; k < neighbourhood.positions.size(); ++k) {
+    if (filter && neighbourhood.normals[k].dot(carried) <= 0.0) continue;
+    const Vec<D> u = (neighbourhood.positions[k] - p) * inverse_radius;
+    fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
+  }
+  return fit.solve(carried, normal);
 }
 
 template class AmlsSurface<2>;

@@ -51,6 +51,14 @@ struct NormalStats {
   std::size_t degenerate = 0;
   std::size_t no_solution = 0;
   std::size_t failed() const { return too_few_neighbours + degenerate + no_solution; }
+  void count(FitStatus status) {
+    switch (status) {
+      case FitStatus::ok: ++ok; break;
+      case FitStatus::too_few_neighbours: ++too_few_neighbours; break;
+      case FitStatus::degenerate: ++degenerate; break;
+      case FitStatus::no_solution: ++no_solution; break;
+    }
+  }
 };
 
 template <int D>
@@ -87,6 +95,13 @@ class AmlsSurface {
   void select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
   // F at y from a neighbourhood holding every point within Delta of y.
   Evaluation<D> evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
+  // Step 1 at p, which carries the normal `carried`, from a neighbourhood holding
+  // the positions and carried normals of every point within Delta of p: the fit
+  // and orientation filter of update_normals(), for callers with their own
+  // neighbour index (the ray-tracing baseline's k-d tree). On success writes the
+  // pseudo-normal to `normal`; on failure leaves it untouched.
+  FitStatus pseudo_normal_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p, const Vec<D>& carried,
+                             Vec<D>& normal) const;
 
  private:
   void require_ready() const;

@@ -47,7 +47,7 @@ BenchCase bench_sphere_step(std::size_t points, int threads) {
   BenchCase c;
   c.name = "3D sphere step, " + std::to_string(points / 1000) + "k points";
   c.points = c.points_processed = stats.points_before;
-  c.timings = stats.timings;
+  c.timings = stats.timings.phases();
   c.peak_memory_mib = peak_memory_mib();
   c.threads = threads;
   c.result = std::to_string(stats.points_after) + " points after, h = " + std::to_string(h);
@@ -63,7 +63,7 @@ std::vector<BenchCase> run_bench_suite(int threads, const std::function<void(con
   FlowTestConfig vortex;
   vortex.grid = 512;
   vortex.threads = threads;
-  for (const Variant variant : {Variant::exact, Variant::interpolated}) {
+  for (const FlowVariant variant : {FlowVariant::exact, FlowVariant::interpolated}) {
     vortex.variant = variant;
     reset_peak_memory();
     add(from_flow_test(std::string("2D vortex 512^2 ") + to_string(variant), run_vortex_test(vortex).report));

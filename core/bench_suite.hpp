@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/deforming_surface.hpp"
+#include "core/phase_times.hpp"
 
 namespace amls {
 
@@ -14,12 +15,13 @@ struct BenchCase {
   std::string name;
   std::size_t points = 0;            // points entering the step (for a run: the largest point set)
   std::size_t points_processed = 0;  // points entering each step, summed over the steps
-  PhaseTimings timings;
+  PhaseTimes timings;                // normals, function, resample, deform, hash
   double peak_memory_mib = 0.0;      // peak resident memory during this case
   int threads = 1;
   std::string result;                // the case's accuracy figure, in words
   double points_per_second() const {
-    return timings.total() > 0.0 ? static_cast<double>(points_processed) / timings.total() : 0.0;
+    const double total = total_seconds(timings);
+    return total > 0.0 ? static_cast<double>(points_processed) / total : 0.0;
   }
 };
 

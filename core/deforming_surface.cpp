@@ -13,6 +13,10 @@ PhaseTimings& PhaseTimings::operator+=(const PhaseTimings& o) {
   return *this;
 }
 
+PhaseTimes PhaseTimings::phases() const {
+  return {{"normals", normals}, {"function", function}, {"resample", resample}, {"deform", deform}, {"hash", hash}};
+}
+
 template <int D>
 DeformingSurface<D>::DeformingSurface(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant,
                                       int threads)

@@ -3,6 +3,7 @@
 // phi_{t0 -> t1}: Update_Normals, Update_Function, Resample, Deform_Points, Hash.
 #include "core/amls_surface.hpp"
 #include "core/deformation.hpp"
+#include "core/phase_times.hpp"
 #include "core/resampler.hpp"
 
 namespace amls {
@@ -16,6 +17,8 @@ struct PhaseTimings {
   double hash = 0.0;
   double total() const { return normals + function + resample + deform + hash; }
   PhaseTimings& operator+=(const PhaseTimings& o);
+  // normals, function, resample, deform, hash: the paper's loop order.
+  PhaseTimes phases() const;
 };
 
 struct StepStats {

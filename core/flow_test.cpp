@@ -7,6 +7,7 @@
 
 #include "core/flow_deformation.hpp"
 #include "core/process_memory.hpp"
+#include "core/ray_tracing_surface.hpp"
 #include "core/shapes.hpp"
 
 namespace amls {
@@ -22,29 +23,43 @@ void validate(const FlowTestConfig& c) {
   if (c.threads < 1) throw std::invalid_argument("--threads must be at least 1");
 }
 
-// Runs the loop from t = 0 to `period`, starting from one resampling of the
-// exact shape, and leaves the final points' pseudo-normals computed.
-template <int D>
-void run_flow(DeformingSurface<D>& surface, std::shared_ptr<const VelocityField<D>> field, double period, const FlowTestConfig& config,
+// The work counters of one step, by loop.
+void add_work(FlowTestReport& report, const StepStats& stats) {
+  report.vertex_evaluations += stats.resample.vertices;
+  report.crossings += stats.resample.crossings;
+  report.root_evaluations += stats.resample.root_evaluations;
+  report.failed_normal_fits += stats.normals.failed();
+}
+
+void add_work(FlowTestReport& report, const RayStepStats& stats) {
+  report.sample_evaluations += stats.resample.samples;
+  report.crossings += stats.resample.crossings;
+  report.root_evaluations += stats.resample.root_evaluations;
+  report.removed_clusters += stats.resample.removed;
+  report.failed_normal_fits += stats.normals.failed();
+}
+
+// Runs a loop (DeformingSurface or RayTracingSurface) from t = 0 to `period`,
+// starting from one resampling of the exact shape.
+template <int D, typename Loop>
+void run_flow(Loop& loop, std::shared_ptr<const VelocityField<D>> field, double period, const FlowTestConfig& config,
               const FlowProgress& progress, FlowTestReport& report) {
   const FlowDeformation<D> flow(std::move(field), config.substeps);
-  surface.resample_only();
-  report.points_initial = report.points_max = surface.points().size();
+  loop.resample_only();
+  report.points_initial = report.points_max = loop.points().size();
   report.steps_planned = static_cast<std::size_t>(std::llround(period / config.dt));
+  decltype(loop.resample_only().timings) timings;  // the loop's own phase struct, summed over the steps
   for (std::size_t k = 0; k < report.steps_planned; ++k) {
     const double t0 = period * static_cast<double>(k) / static_cast<double>(report.steps_planned);
     const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
-    const bool resample = config.resample.resample_now(k, surface.points(), surface.surface().grid().spacing());
-    const StepStats stats = surface.step(flow, t0, t1, resample);
+    const bool resample = config.resample.resample_now(k, loop.points(), 1.0 / config.grid);
+    const auto stats = loop.step(flow, t0, t1, resample);
     report.resamples += resample ? 1 : 0;
-    report.timings += stats.timings;
+    timings += stats.timings;
     report.points_processed += stats.points_before;
-    report.vertex_evaluations += stats.resample.vertices;
-    report.crossings += stats.resample.crossings;
-    report.root_evaluations += stats.resample.root_evaluations;
-    report.failed_normal_fits += stats.normals.failed();
+    add_work(report, stats);
     report.steps = k + 1;
-    const std::size_t n = surface.points().size();
+    const std::size_t n = loop.points().size();
     report.points_max = std::max(report.points_max, n);
     if (progress) progress(k + 1, report.steps_planned, t1, n);
     if (n == 0) {
@@ -58,14 +73,18 @@ void run_flow(DeformingSurface<D>& surface, std::shared_ptr<const VelocityField<
       break;
     }
   }
-  report.points_final = surface.points().size();
-  if (!surface.points().empty()) {
-    surface.refresh_normals();
-    report.spacing_h = spacing_stats(surface.points(), surface.surface().grid().spacing());
-  }
+  report.timings = timings.phases();
+  report.points_final = loop.points().size();
 }
 
-void finish(FlowTestReport& report, const RayScan& scan) {
+// Measures the final surface (whichever loop made it: the same surface by the
+// same code) and returns the run with the final points, which carry their
+// pseudo-normals: the best normals the surface has.
+template <int D, typename Measure>
+FlowTestRun<D> finish(FlowTestReport& report, const AmlsSurface<D>& surface, Measure&& measure) {
+  if (!surface.points().empty()) report.spacing_h = spacing_stats(surface.points(), surface.grid().spacing());
+  ThreadPool pool(report.config.threads);
+  const RayScan scan = measure(surface, pool, report);
   if (!report.broken && !scan.closed) {
     report.broken = true;
     report.status_reason = (report.dimension == 2 ? "the final curve is not one closed curve: "
@@ -73,14 +92,13 @@ void finish(FlowTestReport& report, const RayScan& scan) {
                            scan.reason;
   }
   report.peak_memory_mib = peak_memory_mib();
+  PointSet<D> out = surface.points();
+  if (surface.pseudo_normals().size() == out.size()) out.normals = surface.pseudo_normals();
+  return {report, std::move(out)};
 }
 
-// The final points carry their pseudo-normals: the best normals the surface has.
-template <int D>
-PointSet<D> final_points_of(const DeformingSurface<D>& surface) {
-  PointSet<D> out = surface.points();
-  if (surface.surface().pseudo_normals().size() == out.size()) out.normals = surface.surface().pseudo_normals();
-  return out;
+Variant grid_variant(FlowVariant variant) {
+  return variant == FlowVariant::interpolated ? Variant::interpolated : Variant::exact;
 }
 
 // One flow test: the shape sampled at spacing h/2, carried by the field over
@@ -96,14 +114,36 @@ FlowTestRun<D> run_flow_test(const char* test, const FlowTestConfig& config, std
   report.config = config;
   const Grid<D> grid = Grid<D>::unit(config.grid);
   const AmlsParameters parameters{config.radius_factor, config.min_weight};
-  DeformingSurface<D> surface(grid, parameters, config.variant, config.threads);
-  surface.set_points(sample(0.5 * grid.spacing()));
-  run_flow<D>(surface, std::move(field), period, config, progress, report);
-  finish(report, measure(surface.surface(), surface.pool(), report));
-  return {report, final_points_of(surface)};
+  if (config.variant == FlowVariant::raytrace) {
+    RayTracingSurface<D> loop(grid, parameters, config.ray, config.threads);
+    loop.set_points(sample(0.5 * grid.spacing()));
+    run_flow<D>(loop, std::move(field), period, config, progress, report);
+    return finish<D>(report, loop.amls_surface(), measure);
+  }
+  DeformingSurface<D> loop(grid, parameters, grid_variant(config.variant), config.threads);
+  loop.set_points(sample(0.5 * grid.spacing()));
+  run_flow<D>(loop, std::move(field), period, config, progress, report);
+  if (!loop.points().empty()) loop.refresh_normals();
+  return finish<D>(report, loop.surface(), measure);
 }
 
 }  // namespace
+
+const char* to_string(FlowVariant variant) {
+  switch (variant) {
+    case FlowVariant::exact: return "exact";
+    case FlowVariant::interpolated: return "interpolated";
+    case FlowVariant::raytrace: return "raytrace";
+  }
+  return "?";
+}
+
+FlowVariant parse_flow_variant(const std::string& name) {
+  if (name == "exact") return FlowVariant::exact;
+  if (name == "interpolated") return FlowVariant::interpolated;
+  if (name == "raytrace") return FlowVariant::raytrace;
+  throw std::invalid_argument("unknown variant '" + name + "' (expected exact, interpolated or raytrace)");
+}
 
 FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress& progress) {
   const Vec<2> center(0.5, 0.75);

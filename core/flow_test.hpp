@@ -10,13 +10,25 @@
 
 #include "core/deforming_surface.hpp"
 #include "core/metrics.hpp"
+#include "core/phase_times.hpp"
+#include "core/ray_resampler.hpp"
 #include "core/resample_policy.hpp"
 
 namespace amls {
 
+// How a flow test resamples: the paper's grid walk with exact or interpolated
+// crossings (DeformingSurface), or the ray-tracing baseline of Gois et al.
+// 2008 (RayTracingSurface).
+enum class FlowVariant { exact, interpolated, raytrace };
+
+const char* to_string(FlowVariant variant);
+// Throws std::invalid_argument naming the accepted values.
+FlowVariant parse_flow_variant(const std::string& name);
+
 struct FlowTestConfig {
   int grid = 256;  // cells per unit length: h = 1 / grid
-  Variant variant = Variant::exact;
+  FlowVariant variant = FlowVariant::exact;
+  RaySettings ray;  // for FlowVariant::raytrace
   double radius_factor = 3.0;
   double min_weight = AmlsParameters{}.min_weight;
   double dt = 0.01;
@@ -39,12 +51,19 @@ struct FlowTestReport {
   std::size_t points_final = 0;
   std::size_t points_processed = 0;  // points entering each step, summed over the steps
   SpacingStats spacing_h;  // of the final point set
-  PhaseTimings timings;
-  // Work done over the run: F evaluated at grid vertices, edges found crossing,
-  // F evaluated by the exact variant's root finder, Pratt fits that failed.
+  // Seconds per phase over the steps, the variant's own phases in its table's
+  // order: normals, function, resample, deform, hash for the grid walk;
+  // deform, remove_clusters, rebuild_tree, intersections, normals for ray tracing.
+  PhaseTimes timings;
+  // Work done over the run: F evaluated at grid vertices (grid walk) or at the
+  // samples along the rays (ray tracing), sign changes found (edges or
+  // brackets), F evaluated by the root finder, candidates removed as clusters
+  // (ray tracing), Pratt fits that failed.
   std::size_t vertex_evaluations = 0;
+  std::size_t sample_evaluations = 0;
   std::size_t crossings = 0;
   std::size_t root_evaluations = 0;
+  std::size_t removed_clusters = 0;
   std::size_t failed_normal_fits = 0;
   double peak_memory_mib = 0.0;
   double l1_error = 0.0;              // 2D

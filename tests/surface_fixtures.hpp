@@ -1,5 +1,9 @@
 #pragma once
 // Small builders shared by the tests: a ready AMLS surface from a point set.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "core/amls_surface.hpp"
 
 namespace amls::test {
@@ -22,6 +26,18 @@ std::vector<double> nearest_neighbour_distances(const std::vector<Vec<D>>& p) {
     for (std::size_t j = 0; j < p.size(); ++j)
       if (i != j) out[i] = std::min(out[i], (p[i] - p[j]).norm());
   return out;
+}
+
+// The widest gap between angularly consecutive points about `center`, as arc
+// length on the circle of `radius` (the whole circle for fewer than 2 points).
+inline double widest_circle_gap(const std::vector<Vec<2>>& p, const Vec<2>& center, double radius) {
+  std::vector<double> angles;
+  for (const Vec<2>& q : p) angles.push_back(std::atan2(q.y() - center.y(), q.x() - center.x()));
+  std::sort(angles.begin(), angles.end());
+  if (angles.size() < 2) return 2.0 * std::numbers::pi * radius;
+  double widest = angles.front() + 2.0 * std::numbers::pi - angles.back();
+  for (std::size_t i = 1; i < angles.size(); ++i) widest = std::max(widest, angles[i] - angles[i - 1]);
+  return widest * radius;
 }
 
 }  // namespace amls::test

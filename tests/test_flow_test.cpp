@@ -2,6 +2,7 @@
 
 #include "core/flow_deformation.hpp"
 #include "core/flow_test.hpp"
+#include "core/ray_tracing_surface.hpp"
 #include "core/shapes.hpp"
 
 using namespace amls;
@@ -57,4 +58,61 @@ TEST_CASE("the vortex report flags a run whose curve breaks") {
   const FlowTestReport r = run_vortex_test(config).report;
   CHECK(r.broken);
   CHECK_FALSE(r.status_reason.empty());
+}
+
+TEST_CASE("the ray-tracing baseline at 128^2 is within 20% of the paper's ray-tracing error") {
+  FlowTestConfig config;
+  config.grid = 128;
+  config.variant = FlowVariant::raytrace;
+  const FlowTestReport r = run_vortex_test(config).report;
+  CHECK_FALSE(r.broken);
+  CHECK(r.steps == 800);
+  CHECK(r.l1_error <= 1.2 * 0.00730);  // paper, Table 2, "Original"
+  CHECK(r.l1_error > 0.0);
+  CHECK(r.spacing_h.max < 2.0);
+  CHECK(r.sample_evaluations > 0);
+  CHECK(r.vertex_evaluations == 0);
+  CHECK(r.removed_clusters > 0);
+  // Its own phases, in Table 1's order.
+  std::vector<std::string> phases;
+  for (const PhaseTime& p : r.timings) phases.push_back(p.phase);
+  CHECK(phases == std::vector<std::string>{"deform", "remove_clusters", "rebuild_tree", "intersections", "normals"});
+}
+
+TEST_CASE("ray-tracing flow-test results do not depend on the thread count") {
+  FlowTestConfig config;
+  config.grid = 64;
+  config.dt = 0.04;
+  config.variant = FlowVariant::raytrace;
+  const FlowTestRun<2> one = run_vortex_test(config);
+  config.threads = 3;
+  const FlowTestRun<2> three = run_vortex_test(config);
+  CHECK(one.report.l1_error == three.report.l1_error);
+  CHECK(one.report.points_max == three.report.points_max);
+  CHECK(one.final_points.positions == three.final_points.positions);
+}
+
+TEST_CASE("a short ray-traced Enright run conserves the enclosed volume") {
+  // As for the grid walk above: the field is divergence-free and the shape
+  // still star-shaped about its centroid.
+  const Grid<3> grid = Grid<3>::unit(48);
+  RayTracingSurface<3> surface(grid, AmlsParameters{}, RaySettings{}, 2);
+  surface.set_points(sample_sphere(Vec<3>(0.35, 0.35, 0.35), 0.15, 6000));
+  surface.resample_only();
+  const FlowDeformation<3> flow(std::make_shared<EnrightField>(3.0), 1);
+  for (int k = 0; k < 15; ++k) surface.step(flow, 0.01 * k, 0.01 * (k + 1));
+  const AmlsSurface<3> final_surface = surface.amls_surface();
+  Vec<3> centroid = Vec<3>::Zero();
+  for (const auto& p : final_surface.points().positions) centroid += p;
+  centroid /= static_cast<double>(final_surface.points().size());
+  ThreadPool pool(2);
+  const SphereError e = sphere_volume_error(final_surface, centroid, 0.15, pool, 4000);
+  CHECK(e.scan.closed);
+  CHECK(std::abs(e.volume - e.exact_volume) / e.exact_volume < 0.01);
+}
+
+TEST_CASE("flow variants are named exact, interpolated and raytrace") {
+  for (const FlowVariant v : {FlowVariant::exact, FlowVariant::interpolated, FlowVariant::raytrace})
+    CHECK(parse_flow_variant(to_string(v)) == v);
+  CHECK_THROWS_AS(parse_flow_variant("walk"), std::invalid_argument);
 }

@@ -1,0 +1,62 @@
+#pragma once
+// The zero of F on a short segment whose ends have opposite signs, located by
+// Illinois regula falsi (core/root_finding.hpp) to near machine precision, with
+// the unit normal a new point gets there: the fitted sphere's gradient at the
+// root when the root's own evaluation gave it, else the gradients of the ends
+// interpolated. Where F turns undefined inside the segment, the zero of the
+// linear interpolant of the end values is taken instead (a fallback).
+#include <cmath>
+
+#include "core/gradient_fit.hpp"
+#include "core/root_finding.hpp"
+
+namespace amls {
+
+// Roots are located to this fraction of the segment: near machine precision
+// for coordinates of order one on grids up to a few thousand cells.
+inline constexpr double kSegmentRootTolerance = 1e-12;
+
+template <int D>
+struct SegmentRoot {
+  double t = 0.0;                    // 0 at the segment's start, 1 at its end
+  Vec<D> normal = Vec<D>::Zero();    // unit
+  int evaluations = 0;               // of F by the root finder
+  bool fallback = false;             // F was undefined on the way: t is the interpolant's zero
+};
+
+// `evaluate(y)` returns F's Evaluation<D> at y. f0 and f1 are F at `start` and
+// `start + step`, defined and of opposite signs (a zero counts as positive).
+template <int D, typename Evaluate>
+SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, const Vec<D>& step,
+                                   const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
+  SegmentRoot<D> out;
+  out.t = f0.value / (f0.value - f1.value);
+  Vec<D> normal = (1.0 - out.t) * f0.gradient + out.t * f1.gradient;
+  // The evaluation with the smallest |F| so far: the root's, at the end.
+  double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
+  Evaluation<D> best = best_t == 0.0 ? f0 : f1;
+  const RootResult root = find_root_illinois(
+      [&](double t) -> std::optional<double> {
+        const Evaluation<D> e = evaluate(Vec<D>(start + t * step));
+        if (!e.defined) return std::nullopt;
+        if (std::abs(e.value) < std::abs(best.value)) {
+          best = e;
+          best_t = t;
+        }
+        return e.value;
+      },
+      0.0, 1.0, f0.value, f1.value, kSegmentRootTolerance,
+      kSegmentRootTolerance * (std::abs(f0.value) + std::abs(f1.value)));
+  out.evaluations = root.evaluations;
+  if (root.ok) {
+    out.t = root.t;
+    if (root.t == best_t && best.gradient.squaredNorm() > 0.0) normal = best.gradient;
+  } else {
+    out.fallback = true;
+  }
+  const double length = normal.norm();
+  out.normal = length > 0.0 ? Vec<D>(normal / length) : Vec<D>::Unit(fallback_axis);
+  return out;
+}
+
+}  // namespace amls
