@@ -17,6 +17,7 @@ The editor's debug log (--debug-log) says when it is ready and where the view
 is. Exits 77 (skipped) without a display or xdotool.
 """
 import os
+import random
 import re
 import select
 import shutil
@@ -317,27 +318,39 @@ XVFB = None  # the X server the test started, if any
 
 
 def start_xvfb(log_path):
-    """Starts Xvfb on a free display it chooses; sets DISPLAY; returns the process."""
-    read_end, write_end = os.pipe()
-    with open(log_path, "w") as log:
-        server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1280x800x24", "-nolisten",
-                                   "tcp"], pass_fds=(write_end,), stdout=log, stderr=subprocess.STDOUT)
-    os.close(write_end)
-    number = b""
-    deadline = time.monotonic() + TIMEOUT
-    while not number.endswith(b"\n") and time.monotonic() < deadline:
-        ready, _, _ = select.select([read_end], [], [], 0.5)
-        if ready:
-            chunk = os.read(read_end, 16)
-            if not chunk:
-                break
-            number += chunk
-    os.close(read_end)
-    if not number.strip().isdigit():
+    """Starts Xvfb on a free display; sets DISPLAY; returns the process.
+
+    The display number is random and high, and the server is checked to be ours by its screen size: X
+    servers of other jobs on the machine may share the abstract socket namespace, where `:0` or the
+    number `xvfb-run -a` picks may already be someone else's."""
+    rng = random.Random()
+    for _ in range(8):
+        number = rng.randint(200, 30000)
+        read_end, write_end = os.pipe()
+        with open(log_path, "a") as log:
+            server = subprocess.Popen(["Xvfb", ":%d" % number, "-displayfd", str(write_end), "-screen", "0",
+                                       "1280x800x24", "-nolisten", "tcp"], pass_fds=(write_end,), stdout=log,
+                                      stderr=subprocess.STDOUT)
+        os.close(write_end)
+        answer = b""
+        deadline = time.monotonic() + TIMEOUT
+        while not answer.endswith(b"\n") and time.monotonic() < deadline and server.poll() is None:
+            ready, _, _ = select.select([read_end], [], [], 0.2)
+            if ready:
+                chunk = os.read(read_end, 16)
+                if not chunk:
+                    break
+                answer += chunk
+        os.close(read_end)
+        display = ":%d" % number
+        probe = subprocess.run(["xdotool", "getdisplaygeometry"], env={**os.environ, "DISPLAY": display},
+                               capture_output=True, text=True)
+        if answer.strip() == str(number).encode() and probe.stdout.split() == ["1280", "800"]:
+            os.environ["DISPLAY"] = display
+            return server
         server.kill()
-        fail("Xvfb did not start")
-    os.environ["DISPLAY"] = ":" + number.strip().decode()
-    return server
+        server.wait()
+    fail("could not start Xvfb")
 
 
 def main():

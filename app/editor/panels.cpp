@@ -192,12 +192,13 @@ void table1_section(const Snapshot& snapshot) {
   const Row rows[] = {{"Deform", last.deform, total.deform},          {"Update F", last.function, total.function},
                       {"Resample", last.resample, total.resample},    {"Hash", last.hash, total.hash},
                       {"Comp. Normals", last.normals, total.normals}, {"Total", last.total(), sum}};
-  if (ImGui::BeginTable("table1", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH,
-                        ImVec2(18.0f * ImGui::GetFontSize(), 0.0f))) {
+  if (ImGui::BeginTable("table1", 4,
+                        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingFixedFit)) {
+    const float number = ImGui::CalcTextSize("00000.00").x;
     ImGui::TableSetupColumn("phase");
-    ImGui::TableSetupColumn("last ms");
-    ImGui::TableSetupColumn("total s");
-    ImGui::TableSetupColumn("%");
+    ImGui::TableSetupColumn("last ms", ImGuiTableColumnFlags_WidthFixed, number);
+    ImGui::TableSetupColumn("total s", ImGuiTableColumnFlags_WidthFixed, number);
+    ImGui::TableSetupColumn("%", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("100.0").x);
     ImGui::TableHeadersRow();
     for (const Row& row : rows) {
       ImGui::TableNextRow();
@@ -217,8 +218,9 @@ void table1_section(const Snapshot& snapshot) {
               snapshot.spacing.max);
   if (snapshot.has_last) {
     const std::size_t failed = snapshot.last.normals.failed();
-    ImGui::TextColored(failed > 0 ? kWarning : kDim, "failed normal fits %zu, undefined F at %zu of %zu vertices",
-                       failed, snapshot.last.resample.undefined_vertices, snapshot.last.resample.vertices);
+    ImGui::TextColored(failed > 0 ? kWarning : kDim, "failed normal fits: %zu", failed);
+    ImGui::TextColored(kDim, "F undefined at %zu of %zu vertices", snapshot.last.resample.undefined_vertices,
+                       snapshot.last.resample.vertices);
   }
 }
 
