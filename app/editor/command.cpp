@@ -1,15 +1,10 @@
 #include "app/editor/command.hpp"
 
+#include "app/editor/overloaded.hpp"
+
 namespace amls::editor {
 
 namespace {
-
-template <typename... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <typename... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 template <typename... Ts>
 bool holds_one_of(const Command& command) {

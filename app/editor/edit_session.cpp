@@ -250,21 +250,22 @@ void EditSession<D>::set_resampling(bool enabled) {
 }
 
 template <int D>
-bool EditSession<D>::undo() {
-  if (undo_.empty()) return false;
-  redo_.push_back(current_state());
-  restore(undo_.back());
-  undo_.pop_back();
+bool EditSession<D>::travel(std::deque<State>& from, std::deque<State>& to) {
+  if (from.empty()) return false;
+  to.push_back(current_state());
+  restore(from.back());
+  from.pop_back();
   return true;
 }
 
 template <int D>
+bool EditSession<D>::undo() {
+  return travel(undo_, redo_);
+}
+
+template <int D>
 bool EditSession<D>::redo() {
-  if (redo_.empty()) return false;
-  undo_.push_back(current_state());
-  restore(redo_.back());
-  redo_.pop_back();
-  return true;
+  return travel(redo_, undo_);
 }
 
 template <int D>

@@ -95,6 +95,8 @@ class EditSession {
   State current_state() const;
   void restore(const State& state);
   void push_undo();
+  // Undo and redo: the state now goes onto `to`, the newest of `from` comes back.
+  bool travel(std::deque<State>& from, std::deque<State>& to);
   EditResult resample_now(const WorkControl& control);
 
   int threads_;

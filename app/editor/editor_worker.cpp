@@ -7,19 +7,13 @@
 
 #include "app/editor/atomic_text_file.hpp"
 #include "app/editor/initial_shape.hpp"
+#include "app/editor/overloaded.hpp"
 #include "app/editor/sampling_quality.hpp"
 #include "core/point_set_io.hpp"
 
 namespace amls::editor {
 
 namespace {
-
-template <typename... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <typename... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 template <int D>
 Vec<3> to_3d_vector(const Vec<D>& v) {

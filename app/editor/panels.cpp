@@ -34,6 +34,21 @@ std::string format(const char* pattern, double value) {
 
 float status_bar_height() { return ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y; }
 
+// Point count and h of a built-in shape, and the button that loads it.
+void builtin_shape(int dimension, const char* button, double radius, int& points, double& spacing,
+                   const PanelActions& actions) {
+  ImGui::PushID(dimension);
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 6.0f);
+  ImGui::InputInt("points", &points, 0);
+  ImGui::SameLine();
+  ImGui::InputDouble("h", &spacing, 0.0, 0.0, "%.4g");
+  ImGui::PopItemWidth();
+  if (ImGui::Button(button))
+    actions.post(
+        command::LoadShape{dimension, radius, static_cast<std::size_t>(std::max(dimension + 1, points)), spacing});
+  ImGui::PopID();
+}
+
 void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& actions) {
   if (snapshot.dimension > 0) {
     ImGui::TextWrapped("%s", snapshot.name.c_str());
@@ -46,20 +61,8 @@ void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& ac
   ImGui::SameLine();
   ImGui::TextColored(kDim, "or drop a file here");
   if (ImGui::TreeNode("Built-in shapes")) {
-    ImGui::PushItemWidth(ImGui::GetFontSize() * 6.0f);
-    ImGui::InputInt("points##circle", &ui.circle_points, 0);
-    ImGui::SameLine();
-    ImGui::InputDouble("h##circle", &ui.circle_spacing, 0.0, 0.0, "%.4g");
-    if (ImGui::Button("New circle (2D)"))
-      actions.post(command::LoadShape{2, ui.circle_radius, static_cast<std::size_t>(std::max(3, ui.circle_points)),
-                                      ui.circle_spacing});
-    ImGui::InputInt("points##sphere", &ui.sphere_points, 0);
-    ImGui::SameLine();
-    ImGui::InputDouble("h##sphere", &ui.sphere_spacing, 0.0, 0.0, "%.4g");
-    if (ImGui::Button("New sphere (3D)"))
-      actions.post(command::LoadShape{3, ui.sphere_radius, static_cast<std::size_t>(std::max(4, ui.sphere_points)),
-                                      ui.sphere_spacing});
-    ImGui::PopItemWidth();
+    builtin_shape(2, "New circle (2D)", ui.circle_radius, ui.circle_points, ui.circle_spacing, actions);
+    builtin_shape(3, "New sphere (3D)", ui.sphere_radius, ui.sphere_points, ui.sphere_spacing, actions);
     ImGui::TreePop();
   }
   ImGui::Separator();

@@ -20,17 +20,10 @@ void validate(const SurfaceSettings& settings) {
   require_positive(settings.alpha, "MLS alpha");
 }
 
-const char* kind_name(MlsKind kind) {
-  switch (kind) {
-    case MlsKind::affine:
-      return "affine";
-    case MlsKind::similarity:
-      return "similarity";
-    case MlsKind::rigid:
-      return "rigid";
-  }
-  return "rigid";
-}
+// Indexed by MlsKind (affine, similarity, rigid).
+constexpr const char* kKindNames[] = {"affine", "similarity", "rigid"};
+
+const char* kind_name(MlsKind kind) { return kKindNames[static_cast<int>(kind)]; }
 
 MlsKind kind_from_name(const std::string& name) {
   for (MlsKind kind : {MlsKind::affine, MlsKind::similarity, MlsKind::rigid})
