@@ -165,6 +165,16 @@ TEST_CASE("a grid change resamples at the new spacing; reset goes back to the in
   CHECK(session.points().size() > 450);
 }
 
+TEST_CASE("a grid spacing that would make millions of points is refused and changes nothing") {
+  EditSession<3> session(make_sphere(1.0, 2000, 0.08), 1);
+  const PointSet<3> before = session.points();
+  CHECK_THROWS_WITH_AS(session.set_grid(0.0001, 3.0, kRunAll), doctest::Contains("larger grid spacing"),
+                       std::invalid_argument);
+  CHECK(session.settings().spacing == 0.08);
+  CHECK(session.points().positions == before.positions);
+  CHECK(!session.can_undo());
+}
+
 TEST_CASE("a session of handle drags, handle changes, an undo and an Esc replays exactly as amls deform runs it") {
   EditSession<2> session = circle_with_two_handles();
   const PointSet<2> initial = sample_circle(Vec<2>::Zero(), 1.0, 250);

@@ -1,5 +1,6 @@
 #include "app/editor/edit_session.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -226,6 +227,12 @@ EditResult EditSession<D>::set_grid(double spacing, double radius_factor, const 
   next.spacing = spacing;
   next.radius_factor = radius_factor;
   if (next.same_grid(settings_)) return {};
+  // A resample at h' gives about (h / h')^(D-1) times as many points: refuse what would swamp the machine.
+  const double expected = static_cast<double>(points().size()) * std::pow(settings_.spacing / spacing, D - 1);
+  if (expected > kMaxExpectedPoints)
+    throw std::invalid_argument("h = " + std::to_string(spacing) + " would make about " +
+                                std::to_string(static_cast<long long>(expected)) +
+                                " points; choose a larger grid spacing");
   std::unique_ptr<DeformingSurface<D>> surface = make_surface(next);  // throws before anything changed
   push_undo();
   surface->set_points(surface_->points());

@@ -69,7 +69,8 @@ class EditSession {
 
   // Parameters. The variant and the grid resample the current surface at once
   // (no deformation) and are undoable; kind, alpha and resampling apply to the
-  // next steps and are kept by undo.
+  // next steps and are kept by undo. set_grid throws std::invalid_argument for
+  // a bad value or one that would make millions of points, changing nothing.
   EditResult set_variant(Variant variant, const WorkControl& control);
   EditResult set_grid(double spacing, double radius_factor, const WorkControl& control);
   void set_deformation(MlsKind kind, double alpha);
@@ -90,6 +91,8 @@ class EditSession {
     SessionRecording<D> recording;
   };
   static constexpr std::size_t kMaxUndo = 100;
+  // set_grid refuses a spacing that would resample the surface into more points than this.
+  static constexpr double kMaxExpectedPoints = 5e6;
 
   std::unique_ptr<DeformingSurface<D>> make_surface(const SurfaceSettings& settings) const;
   State current_state() const;

@@ -71,6 +71,8 @@ EditorApp::EditorApp(const EditorOptions& options)
 }
 
 EditorApp::~EditorApp() {
+  // The worker may finish a phase before it stops: the window goes at once.
+  window_.hide();
   for (auto& pending : background_) pending.wait();
   worker_.reset();
 }
@@ -159,7 +161,10 @@ void EditorApp::take_snapshot() {
           renderer_->set_points(to_2d(next->points), spacing);
         else
           renderer_->set_points(next->points, spacing);
-        renderer_->set_scalars(next->spacing_h);
+        if (next->spacing_h.size() == next->points.size())
+          renderer_->set_scalars(next->spacing_h);
+        else
+          renderer_->clear_scalars();
       } catch (const std::exception& e) {
         ui_.tell({Message::Level::error, std::string("Cannot show the points: ") + e.what()});
       }

@@ -148,6 +148,8 @@ bool EditorWindow::should_close() const { return glfwWindowShouldClose(window_) 
 
 void EditorWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
+void EditorWindow::hide() { glfwHideWindow(window_); }
+
 void EditorWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void EditorWindow::begin_frame(double timeout) {

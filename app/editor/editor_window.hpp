@@ -38,6 +38,7 @@ class EditorWindow {
 
   bool should_close() const;
   void request_close();
+  void hide();
   void set_title(const std::string& title);
   // Waits up to `timeout` seconds for an event (0: only polls), then starts the ImGui frame.
   void begin_frame(double timeout);
