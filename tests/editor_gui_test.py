@@ -309,7 +309,7 @@ def test_frames_during_heavy_step(binary, folder):
     print("busy for %.2f s over %d frames, longest gap %.3f s" % (busy, len(times), max(gaps, default=0.0)))
     # A UI that waited for the worker would show one gap as long as the whole step. Frames are slow here
     # (software GL on cores shared with the worker and other jobs), so the bound is loose.
-    check(busy > 1.0, "the 3D resample kept the worker busy for a while (%.2f s)" % busy)
+    check(busy > 0.6, "the 3D resample kept the worker busy for a while (%.2f s)" % busy)
     check(len(times) >= 5 and max(gaps) < min(2.0, busy / 2), "frames kept coming while the worker was busy")
     editor.quit()
 
