@@ -1,0 +1,79 @@
+#pragma once
+// What the editor's UI asks its worker to do (editor_worker.hpp). Positions are
+// 3D (z = 0 in 2D). No GL.
+#include <cstddef>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "app/editor/surface_settings.hpp"
+
+namespace amls::editor {
+
+namespace command {
+
+struct LoadFile {  // a point-set file or a scene
+  std::string path;
+};
+struct LoadShape {  // a built-in shape (circle in 2D, sphere in 3D)
+  int dimension = 2;
+  double radius = 1.0;
+  std::size_t points = 250;
+  double spacing = 0.024;
+};
+struct AddHandle {
+  Vec<3> position = Vec<3>::Zero();
+};
+struct RemoveHandle {
+  std::size_t index = 0;
+};
+struct BeginDrag {};  // the state now is what Esc and undo go back to
+struct MoveHandles {  // every handle's new position; coalesced: the newest wins
+  std::vector<Vec<3>> positions;
+};
+struct CancelDrag {};  // back to the state at BeginDrag
+struct SetVariant {
+  Variant variant = Variant::exact;
+};
+struct SetGrid {
+  double spacing = 0.024;
+  double radius_factor = 3.0;
+};
+struct SetDeformation {
+  MlsKind kind = MlsKind::rigid;
+  double alpha = 1.0;
+};
+struct SetResampling {
+  bool enabled = true;
+};
+struct SetCurveTracing {  // 2D: trace the MLS curve for display
+  bool enabled = true;
+};
+struct Undo {};
+struct Redo {};
+struct Reset {};
+struct Export {  // the current point set: PLY (with normals) or XYZ by the extension
+  std::string path;
+};
+struct SaveScene {
+  std::string path;
+};
+
+}  // namespace command
+
+using Command =
+    std::variant<command::LoadFile, command::LoadShape, command::AddHandle, command::RemoveHandle, command::BeginDrag,
+                 command::MoveHandles, command::CancelDrag, command::SetVariant, command::SetGrid,
+                 command::SetDeformation, command::SetResampling, command::SetCurveTracing, command::Undo,
+                 command::Redo, command::Reset, command::Export, command::SaveScene>;
+
+// A load or a parameter change stops the step that is running (between its
+// phases), and so do Esc, undo, redo and reset.
+bool cancels_running_work(const Command& command);
+// Loads, Esc, undo, redo and reset make the handle moves still queued before
+// them pointless: those are dropped.
+bool supersedes_queued_moves(const Command& command);
+// For the status line: "loading", "moving handles", ...
+const char* describe(const Command& command);
+
+}  // namespace amls::editor

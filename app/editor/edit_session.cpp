@@ -1,0 +1,290 @@
+#include "app/editor/edit_session.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/mls_deformation.hpp"
+#include "core/point_set_io.hpp"
+#include "core/point_set_resampling.hpp"
+
+namespace amls::editor {
+
+namespace {
+
+template <int D>
+PointSet<D> from_3d(const PointSet<3>& points) {
+  if constexpr (D == 2) {
+    return to_2d(points);
+  } else {
+    return points;
+  }
+}
+
+template <int D>
+std::vector<Vec<D>> handles_from_3d(const std::vector<Vec<3>>& handles) {
+  std::vector<Vec<D>> out;
+  for (const Vec<3>& h : handles) out.push_back(h.template head<D>());
+  return out;
+}
+
+void add_stats(EditResult& result, const StepStats& stats) {
+  if (!result.has_stats) {
+    result.stats = stats;
+    result.has_stats = true;
+    return;
+  }
+  result.stats.timings += stats.timings;
+  result.stats.points_after = stats.points_after;
+  if (stats.normals.ok + stats.normals.failed() > 0) result.stats.normals = stats.normals;
+  if (stats.resample.vertices > 0) result.stats.resample = stats.resample;
+}
+
+// Runs the phases of one edit, reporting each and stopping between them when asked.
+class Phases {
+ public:
+  Phases(const WorkControl& control, int count) : control_(control), count_(count) {}
+  // False if the edit must stop before this phase.
+  bool next(const char* name) {
+    if (control_.cancelled && control_.cancelled()) return false;
+    if (control_.phase) control_.phase(name, index_, count_);
+    ++index_;
+    return true;
+  }
+
+ private:
+  const WorkControl& control_;
+  int count_;
+  int index_ = 0;
+};
+
+}  // namespace
+
+template <int D>
+EditSession<D>::EditSession(const InitialShape& shape, int threads)
+    : threads_(threads),
+      initial_{from_3d<D>(shape.points), handles_from_3d<D>(shape.handles), shape.settings, false,
+               SessionRecording<D>(shape.source, shape.settings)},
+      settings_(shape.settings),
+      recording_(initial_.recording) {
+  if (shape.dimension != D)
+    throw std::invalid_argument("a " + std::to_string(shape.dimension) + "D shape in a " + std::to_string(D) +
+                                "D session");
+  validate(settings_);
+  surface_ = make_surface(settings_);
+  restore(initial_);
+}
+
+template <int D>
+std::unique_ptr<DeformingSurface<D>> EditSession<D>::make_surface(const SurfaceSettings& settings) const {
+  validate(settings);
+  PointSetResampling grid_options;
+  grid_options.spacing = settings.spacing;
+  grid_options.radius_factor = settings.radius_factor;
+  // The grid `amls deform` builds for the scene: anchored by the initial shape's points.
+  const Grid<D> grid = resampling_grid(initial_.points, grid_options);
+  return std::make_unique<DeformingSurface<D>>(grid, AmlsParameters{settings.radius_factor}, settings.variant,
+                                               threads_);
+}
+
+template <int D>
+typename EditSession<D>::State EditSession<D>::current_state() const {
+  return State{surface_->points(), handles_, settings_, resampled_, recording_};
+}
+
+template <int D>
+void EditSession<D>::restore(const State& state) {
+  SurfaceSettings next = settings_;
+  next.spacing = state.settings.spacing;
+  next.radius_factor = state.settings.radius_factor;
+  next.variant = state.settings.variant;
+  if (!next.same_grid(settings_) || !surface_) surface_ = make_surface(next);
+  surface_->set_variant(next.variant);
+  surface_->set_points(state.points);
+  settings_ = next;
+  handles_ = state.handles;
+  resampled_ = state.resampled;
+  recording_ = state.recording;
+  ++version_;
+}
+
+template <int D>
+void EditSession<D>::push_undo() {
+  undo_.push_back(current_state());
+  if (undo_.size() > kMaxUndo) undo_.pop_front();
+  redo_.clear();
+}
+
+template <int D>
+const AmlsSurface<D>& EditSession<D>::evaluable_surface() {
+  if (normals_version_ != version_) {
+    surface_->refresh_normals();
+    normals_version_ = version_;
+  }
+  return surface_->surface();
+}
+
+template <int D>
+void EditSession<D>::add_handle(const Vec<D>& position) {
+  if (!position.allFinite()) throw std::invalid_argument("a handle needs a finite position");
+  push_undo();
+  handles_.push_back(position);
+}
+
+template <int D>
+void EditSession<D>::remove_handle(std::size_t index) {
+  if (index >= handles_.size())
+    throw std::out_of_range("no handle " + std::to_string(index) + " to remove (there are " +
+                            std::to_string(handles_.size()) + ")");
+  push_undo();
+  handles_.erase(handles_.begin() + static_cast<std::ptrdiff_t>(index));
+}
+
+template <int D>
+void EditSession<D>::begin_drag() {
+  push_undo();
+}
+
+template <int D>
+bool EditSession<D>::cancel_drag() {
+  if (undo_.empty()) return false;
+  restore(undo_.back());
+  undo_.pop_back();
+  return true;
+}
+
+template <int D>
+EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkControl& control) {
+  if (to.size() != handles_.size())
+    throw std::invalid_argument("moving " + std::to_string(to.size()) + " handles, but the session has " +
+                                std::to_string(handles_.size()));
+  EditResult result;
+  if (to == handles_) return result;
+  const MlsDeformation<D> deformation(handles_, to, settings_.kind, settings_.alpha);
+  if (surface_->points().empty()) {
+    handles_ = std::move(to);
+    result.changed = true;
+    return result;
+  }
+  // As `amls deform`: resample the points first unless they are a resample's already.
+  const bool resample = settings_.resample;
+  const bool resample_first = resample && !resampled_;
+  Phases phases(control, (resample_first ? 1 : 0) + 1 + (resample ? 1 : 0));
+  PointSet<D> before = surface_->points();
+  // Stopping puts the points back as they were before the edit (set_points
+  // rehashes them into the same order), so the state is as if it never ran.
+  auto stop = [&] {
+    if (result.has_stats) surface_->set_points(std::move(before));
+    result = EditResult{};
+    result.cancelled = true;
+    return result;
+  };
+  if (resample_first) {
+    if (!phases.next("resampling")) return stop();
+    add_stats(result, surface_->resample_only());
+  }
+  if (!phases.next("deforming")) return stop();
+  add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
+  if (resample) {
+    if (!phases.next("resampling")) return stop();
+    add_stats(result, surface_->resample_only());
+  }
+  if (resample_first) recording_.resampled(settings_);
+  recording_.deformed(handles_, to, settings_);
+  if (resample) recording_.resampled(settings_);
+  handles_ = std::move(to);
+  resampled_ = resample;
+  ++version_;
+  result.changed = result.stepped = true;
+  return result;
+}
+
+template <int D>
+EditResult EditSession<D>::resample_now(const WorkControl& control) {
+  EditResult result;
+  result.changed = true;
+  Phases phases(control, 1);
+  if (surface_->points().empty() || !phases.next("resampling")) return result;
+  add_stats(result, surface_->resample_only());
+  recording_.resampled(settings_);
+  resampled_ = true;
+  ++version_;
+  return result;
+}
+
+template <int D>
+EditResult EditSession<D>::set_variant(Variant variant, const WorkControl& control) {
+  if (variant == settings_.variant) return {};
+  push_undo();
+  settings_.variant = variant;
+  surface_->set_variant(variant);
+  return resample_now(control);
+}
+
+template <int D>
+EditResult EditSession<D>::set_grid(double spacing, double radius_factor, const WorkControl& control) {
+  SurfaceSettings next = settings_;
+  next.spacing = spacing;
+  next.radius_factor = radius_factor;
+  if (next.same_grid(settings_)) return {};
+  // A resample at h' gives about (h / h')^(D-1) times as many points: refuse what would swamp the machine.
+  const double expected = static_cast<double>(points().size()) * std::pow(settings_.spacing / spacing, D - 1);
+  if (expected > kMaxExpectedPoints)
+    throw std::invalid_argument("h = " + std::to_string(spacing) + " would make about " +
+                                std::to_string(static_cast<long long>(expected)) +
+                                " points; choose a larger grid spacing");
+  std::unique_ptr<DeformingSurface<D>> surface = make_surface(next);  // throws before anything changed
+  push_undo();
+  surface->set_points(surface_->points());
+  surface_ = std::move(surface);
+  settings_ = next;
+  ++version_;
+  return resample_now(control);
+}
+
+template <int D>
+void EditSession<D>::set_deformation(MlsKind kind, double alpha) {
+  SurfaceSettings next = settings_;
+  next.kind = kind;
+  next.alpha = alpha;
+  validate(next);
+  settings_ = next;
+}
+
+template <int D>
+void EditSession<D>::set_resampling(bool enabled) {
+  settings_.resample = enabled;
+}
+
+template <int D>
+bool EditSession<D>::travel(std::deque<State>& from, std::deque<State>& to) {
+  if (from.empty()) return false;
+  to.push_back(current_state());
+  restore(from.back());
+  from.pop_back();
+  return true;
+}
+
+template <int D>
+bool EditSession<D>::undo() {
+  return travel(undo_, redo_);
+}
+
+template <int D>
+bool EditSession<D>::redo() {
+  return travel(redo_, undo_);
+}
+
+template <int D>
+void EditSession<D>::reset() {
+  push_undo();
+  State start = initial_;
+  start.settings = settings_;
+  start.recording = SessionRecording<D>(initial_.recording.shape(), settings_);
+  restore(start);
+}
+
+template class EditSession<2>;
+template class EditSession<3>;
+
+}  // namespace amls::editor

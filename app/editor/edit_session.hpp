@@ -1,0 +1,120 @@
+#pragma once
+// One editing session on one surface: the DeformingSurface, its handles, the
+// undo and redo stacks and the recording for Save Scene. It belongs to the
+// editor's worker thread (see editor_worker.hpp) and is not thread-safe. No GL.
+//
+// A handle move is one step of the paper's loop (section 4): the MLS
+// deformation from the handles' previous positions to the new ones, then a
+// resample - the same calls, in the same order, as `amls deform`, so that a
+// saved session replays exactly (session_recording.hpp).
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "app/editor/session_recording.hpp"
+#include "core/deforming_surface.hpp"
+
+namespace amls::editor {
+
+// How an edit reports its phases and learns that it should stop.
+struct WorkControl {
+  std::function<bool()> cancelled;                                     // polled before each phase
+  std::function<void(const char* phase, int index, int count)> phase;  // the phase about to run
+};
+
+struct EditResult {
+  bool changed = false;    // the point set or the handles changed
+  bool cancelled = false;  // stopped between phases: the state is as before the edit
+  bool stepped = false;    // a deformation step was taken
+  bool has_stats = false;  // the surface did work, summed in `stats`
+  StepStats stats;
+};
+
+template <int D>
+class EditSession {
+ public:
+  static constexpr int dimension = D;
+
+  // Throws std::invalid_argument if the shape does not have dimension D, or
+  // its settings are out of range.
+  EditSession(const InitialShape& shape, int threads);
+
+  const PointSet<D>& points() const { return surface_->points(); }
+  const std::vector<Vec<D>>& handles() const { return handles_; }
+  const SurfaceSettings& settings() const { return settings_; }
+  const SessionRecording<D>& recording() const { return recording_; }
+  const Grid<D>& grid() const { return surface_->surface().grid(); }
+  // Changes whenever the point set does.
+  std::uint64_t version() const { return version_; }
+  bool can_undo() const { return !undo_.empty(); }
+  bool can_redo() const { return !redo_.empty(); }
+
+  // The surface of the current points, ready for evaluation (the pseudo-normals recomputed).
+  const AmlsSurface<D>& evaluable_surface();
+  ThreadPool& pool() { return surface_->pool(); }
+
+  // Handles. Adding and removing make the state before them an undo point.
+  void add_handle(const Vec<D>& position);
+  void remove_handle(std::size_t index);  // throws std::out_of_range
+
+  // A drag: begin_drag() makes the current state an undo point; each
+  // move_handles() is one step to the new positions (one per handle; throws
+  // std::invalid_argument for another count); cancel_drag() goes back to the
+  // undo point and drops it.
+  void begin_drag();
+  EditResult move_handles(std::vector<Vec<D>> to, const WorkControl& control);
+  bool cancel_drag();
+
+  // Parameters. The variant and the grid resample the current surface at once
+  // (no deformation) and are undoable; kind, alpha and resampling apply to the
+  // next steps and are kept by undo. set_grid throws std::invalid_argument for
+  // a bad value or one that would make millions of points, changing nothing.
+  EditResult set_variant(Variant variant, const WorkControl& control);
+  EditResult set_grid(double spacing, double radius_factor, const WorkControl& control);
+  void set_deformation(MlsKind kind, double alpha);
+  void set_resampling(bool enabled);
+
+  bool undo();
+  bool redo();
+  // Back to the initial shape and handles with the current parameters (undoable).
+  void reset();
+
+ private:
+  // What an undo restores.
+  struct State {
+    PointSet<D> points;
+    std::vector<Vec<D>> handles;
+    SurfaceSettings settings;  // only h, Delta / h and the variant are restored
+    bool resampled = false;
+    SessionRecording<D> recording;
+  };
+  static constexpr std::size_t kMaxUndo = 100;
+  // set_grid refuses a spacing that would resample the surface into more points than this.
+  static constexpr double kMaxExpectedPoints = 5e6;
+
+  std::unique_ptr<DeformingSurface<D>> make_surface(const SurfaceSettings& settings) const;
+  State current_state() const;
+  void restore(const State& state);
+  void push_undo();
+  // Undo and redo: the state now goes onto `to`, the newest of `from` comes back.
+  bool travel(std::deque<State>& from, std::deque<State>& to);
+  EditResult resample_now(const WorkControl& control);
+
+  int threads_;
+  State initial_;
+  std::unique_ptr<DeformingSurface<D>> surface_;
+  std::vector<Vec<D>> handles_;
+  SurfaceSettings settings_;
+  bool resampled_ = false;  // the points are the last resample's, with nothing done since
+  SessionRecording<D> recording_;
+  std::deque<State> undo_, redo_;
+  std::uint64_t version_ = 0;
+  std::uint64_t normals_version_ = ~std::uint64_t{0};  // the version whose pseudo-normals are computed
+};
+
+extern template class EditSession<2>;
+extern template class EditSession<3>;
+
+}  // namespace amls::editor

@@ -1,0 +1,64 @@
+#include "app/editor/editor_options.hpp"
+
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <filesystem>
+
+namespace amls::editor {
+
+namespace {
+
+// "1280x800" -> (1280, 800).
+bool parse_size(const std::string& text, int& width, int& height) {
+  const auto x = text.find_first_of("xX");
+  if (x == std::string::npos) return false;
+  try {
+    std::size_t used_w = 0, used_h = 0;
+    const int w = std::stoi(text.substr(0, x), &used_w);
+    const int h = std::stoi(text.substr(x + 1), &used_h);
+    if (used_w != x || used_h != text.size() - x - 1 || w < 64 || h < 64 || w > 16384 || h > 16384) return false;
+    width = w;
+    height = h;
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+std::optional<int> parse_editor_options(int argc, char** argv, EditorOptions& options) {
+  CLI::App app{
+      "amls-editor - drag handles and watch a point-set (AMLS) surface deform and resample live.\n"
+      "Press H in the window for the keyboard and mouse controls."};
+  app.set_version_flag("--version", "amls-editor 0.1.0");
+  std::string size;
+  app.add_option("input", options.input, "point set (.ply, .xyz with normals) or scene (.json) to open");
+  app.add_flag("--3d", options.start_3d, "start with the built-in sphere instead of the circle (no input)");
+  app.add_option("--export", options.export_path, "where Ctrl+S writes the point set (.ply with normals, or .xyz)");
+  app.add_option("--scene-out", options.scene_path, "where Save Scene (Ctrl+Shift+S) writes the session");
+  app.add_option("--screenshot", options.screenshot_path, "where F12 writes the window as PNG");
+  app.add_option("--size", size, "window size WxH in screen units (default 1280x800)");
+  app.add_option("--ui-scale", options.ui_scale, "scale of fonts and widgets (default: the monitor's)")
+      ->check(CLI::Range(0.5, 4.0));
+  app.add_option("--threads", options.threads, "threads of the surface's work (default: cores - 1)")
+      ->check(CLI::Range(1, 256));
+  app.add_option("--debug-log", options.debug_log,
+                 "write a line per frame and per event to this file (or set AMLS_EDITOR_DEBUG_LOG)");
+  try {
+    app.parse(argc, argv);
+    if (!size.empty() && !parse_size(size, options.width, options.height))
+      throw CLI::ValidationError("--size", "expected WxH between 64 and 16384, e.g. 1280x800, got " + size);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  if (options.debug_log.empty())
+    if (const char* env = std::getenv("AMLS_EDITOR_DEBUG_LOG")) options.debug_log = env;
+  const std::string stem = options.input.empty() ? (options.start_3d ? "sphere" : "circle")
+                                                 : std::filesystem::path(options.input).stem().string();
+  if (options.export_path.empty()) options.export_path = stem + "-edited.ply";
+  if (options.scene_path.empty()) options.scene_path = stem + "-session.json";
+  return std::nullopt;
+}
+
+}  // namespace amls::editor

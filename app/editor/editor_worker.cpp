@@ -1,0 +1,313 @@
+#include "app/editor/editor_worker.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <utility>
+
+#include "app/editor/atomic_text_file.hpp"
+#include "app/editor/initial_shape.hpp"
+#include "app/editor/overloaded.hpp"
+#include "app/editor/sampling_quality.hpp"
+#include "core/point_set_io.hpp"
+
+namespace amls::editor {
+
+namespace {
+
+template <int D>
+Vec<3> to_3d_vector(const Vec<D>& v) {
+  Vec<3> out = Vec<3>::Zero();
+  out.template head<D>() = v;
+  return out;
+}
+
+template <int D>
+std::vector<Vec<D>> from_3d_vectors(const std::vector<Vec<3>>& in) {
+  std::vector<Vec<D>> out;
+  out.reserve(in.size());
+  for (const Vec<3>& v : in) out.push_back(v.template head<D>());
+  return out;
+}
+
+template <int D>
+PointSet<3> points_3d(const PointSet<D>& points) {
+  if constexpr (D == 3) {
+    return points;
+  } else {
+    return to_3d(points);
+  }
+}
+
+std::string describe_count(std::size_t n, const char* what) { return std::to_string(n) + " " + what; }
+
+}  // namespace
+
+EditorWorker::EditorWorker(WorkerOptions options)
+    : options_(options), snapshot_(std::make_shared<const Snapshot>()), thread_([this] { run(); }) {}
+
+EditorWorker::~EditorWorker() {
+  queue_.close();
+  thread_.join();
+}
+
+std::uint64_t EditorWorker::post(Command command) {
+  const std::uint64_t sequence = queue_.push(std::move(command));
+  std::lock_guard lock(mutex_);
+  posted_ = std::max(posted_, sequence);
+  return sequence;
+}
+
+std::shared_ptr<const Snapshot> EditorWorker::snapshot() const {
+  std::lock_guard lock(mutex_);
+  return snapshot_;
+}
+
+WorkerStatus EditorWorker::status() const {
+  std::lock_guard lock(mutex_);
+  WorkerStatus status = status_;
+  if (status.busy) status.seconds = std::chrono::duration<double>(Clock::now() - started_).count();
+  status.queued = queue_.size();
+  return status;
+}
+
+std::vector<Message> EditorWorker::take_messages() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(messages_, {});
+}
+
+bool EditorWorker::wait_until_idle(std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  return idle_.wait_for(lock, timeout, [&] { return processed_ >= posted_ && !status_.busy; });
+}
+
+void EditorWorker::message(Message::Level level, std::string text) {
+  std::lock_guard lock(mutex_);
+  messages_.push_back(Message{level, std::move(text)});
+}
+
+void EditorWorker::set_phase(const char* name, int index, int count) {
+  std::lock_guard lock(mutex_);
+  status_.activity = name;
+  status_.phase = index;
+  status_.phases = count;
+}
+
+void EditorWorker::run() {
+  while (std::optional<QueuedCommand> queued = queue_.pop()) {
+    {
+      std::lock_guard lock(mutex_);
+      status_ = WorkerStatus{true, describe(queued->command), 0, 1, 0.0, 0};
+      started_ = Clock::now();
+    }
+    try {
+      execute(*queued);
+    } catch (const std::exception& e) {
+      message(Message::Level::error, e.what());
+    }
+    publish(queued->sequence);
+    {
+      std::lock_guard lock(mutex_);
+      status_ = WorkerStatus{};
+      processed_ = queued->sequence;
+    }
+    idle_.notify_all();
+    if (options_.on_publish) options_.on_publish();
+  }
+}
+
+void EditorWorker::start(const InitialShape& shape) {
+  // Build the new session first: if that fails, the current one stays.
+  Session next;
+  if (shape.dimension == 2)
+    next = std::make_unique<EditSession<2>>(shape, options_.threads);
+  else
+    next = std::make_unique<EditSession<3>>(shape, options_.threads);
+  session_ = std::move(next);
+  name_ = shape.name;
+  ++load_id_;
+  has_last_ = false;
+  total_ = PhaseTimings{};
+  steps_ = 0;
+  step_times_.clear();
+  for (const std::string& warning : shape.warnings) message(Message::Level::warning, warning);
+  std::ostringstream text;
+  text << "Loaded " << shape.name << ": " << describe_count(shape.points.size(), "points") << ", " << shape.dimension
+       << "D, h = " << shape.settings.spacing;
+  message(Message::Level::info, text.str());
+}
+
+void EditorWorker::note_result(const EditResult& result) {
+  if (result.cancelled) ++cancelled_;
+  if (!result.has_stats) return;
+  has_last_ = true;
+  last_ = result.stats;
+  total_ += result.stats.timings;
+  if (!result.stepped) return;
+  ++steps_;
+  step_times_.push_back(Clock::now());
+}
+
+void EditorWorker::execute(const QueuedCommand& queued) {
+  const std::uint64_t epoch = queued.epoch;
+  const WorkControl control{[this, epoch] { return queue_.cancel_epoch() != epoch; },
+                            [this](const char* name, int index, int count) { set_phase(name, index, count); }};
+  // Runs `edit(session)` on the session of either dimension; false if there is none.
+  auto with_session = [&](auto&& edit) {
+    return std::visit(Overloaded{[](std::monostate&) { return false; },
+                                 [&](auto& session) {
+                                   edit(*session);
+                                   return true;
+                                 }},
+                      session_);
+  };
+  auto require_session = [&](auto&& edit) {
+    if (!with_session(edit)) message(Message::Level::warning, "Nothing is loaded yet: open a file or a shape first");
+  };
+  using namespace command;
+  std::visit(
+      Overloaded{
+          [&](const LoadFile& c) {
+            try {
+              start(load_initial_shape(c.path));
+            } catch (const std::exception& e) {
+              message(Message::Level::error,
+                      std::string("Cannot open ") + c.path + ": " + e.what() +
+                          (std::holds_alternative<std::monostate>(session_) ? "" : " (the current surface is kept)"));
+            }
+          },
+          [&](const LoadShape& c) {
+            start(c.dimension == 3 ? make_sphere(c.radius, c.points, c.spacing)
+                                   : make_circle(c.radius, c.points, c.spacing));
+          },
+          [&](const AddHandle& c) {
+            require_session([&](auto& s) { s.add_handle(c.position.head<std::decay_t<decltype(s)>::dimension>()); });
+          },
+          [&](const RemoveHandle& c) { require_session([&](auto& s) { s.remove_handle(c.index); }); },
+          [&](const BeginDrag&) { require_session([&](auto& s) { s.begin_drag(); }); },
+          [&](const MoveHandles& c) {
+            require_session([&](auto& s) {
+              constexpr int D = std::decay_t<decltype(s)>::dimension;
+              if (c.positions.size() != s.handles().size()) {
+                message(Message::Level::warning, "A handle move was dropped: the handles changed meanwhile");
+                return;
+              }
+              note_result(s.move_handles(from_3d_vectors<D>(c.positions), control));
+            });
+          },
+          [&](const CancelDrag&) { require_session([&](auto& s) { s.cancel_drag(); }); },
+          [&](const SetVariant& c) {
+            require_session([&](auto& s) { note_result(s.set_variant(c.variant, control)); });
+          },
+          [&](const SetGrid& c) {
+            require_session([&](auto& s) { note_result(s.set_grid(c.spacing, c.radius_factor, control)); });
+          },
+          [&](const SetDeformation& c) { require_session([&](auto& s) { s.set_deformation(c.kind, c.alpha); }); },
+          [&](const SetResampling& c) { require_session([&](auto& s) { s.set_resampling(c.enabled); }); },
+          [&](const SetCurveTracing& c) { curve_enabled_ = c.enabled; },
+          [&](const Undo&) {
+            require_session([&](auto& s) {
+              if (!s.undo()) message(Message::Level::info, "Nothing to undo");
+            });
+          },
+          [&](const Redo&) {
+            require_session([&](auto& s) {
+              if (!s.redo()) message(Message::Level::info, "Nothing to redo");
+            });
+          },
+          [&](const Reset&) { require_session([&](auto& s) { s.reset(); }); },
+          [&](const Export& c) {
+            require_session([&](auto& s) {
+              try {
+                write_point_set(c.path, s.points(), format_from_extension(c.path));
+                message(Message::Level::info,
+                        "Exported " + describe_count(s.points().size(), "points") + " to " + c.path);
+              } catch (const std::exception& e) {
+                message(Message::Level::error, std::string("Export failed (any previous file is intact): ") + e.what());
+              }
+            });
+          },
+          [&](const SaveScene& c) {
+            require_session([&](auto& s) {
+              try {
+                const std::string name = std::filesystem::path(c.path).stem().string();
+                write_text_atomically(c.path, scene_json(s.recording(), c.path, name).dump(2) + "\n");
+                const std::string note =
+                    s.recording().exact() ? "" : " - not an exact replay: " + s.recording().inexact_reason();
+                message(s.recording().exact() ? Message::Level::info : Message::Level::warning,
+                        "Saved the scene " + c.path + " (" + describe_count(s.recording().steps().size(), "steps") +
+                            ")" + note);
+              } catch (const std::exception& e) {
+                message(Message::Level::error, std::string("Save Scene failed: ") + e.what());
+              }
+            });
+          }},
+      queued.command);
+}
+
+void EditorWorker::publish(std::uint64_t processed) {
+  auto snapshot = std::make_shared<Snapshot>();
+  snapshot->generation = ++generation_;
+  snapshot->processed = processed;
+  snapshot->load_id = load_id_;
+  snapshot->name = name_;
+  snapshot->has_last = has_last_;
+  snapshot->last = last_;
+  snapshot->total = total_;
+  snapshot->steps = steps_;
+  snapshot->cancelled = cancelled_;
+  const Clock::time_point now = Clock::now();
+  while (!step_times_.empty() && now - step_times_.front() > std::chrono::seconds(1)) step_times_.pop_front();
+  snapshot->steps_per_second = static_cast<double>(step_times_.size());
+
+  std::visit(Overloaded{[](std::monostate&) {},
+                        [&](auto& session) {
+                          auto& s = *session;
+                          constexpr int D = std::decay_t<decltype(s)>::dimension;
+                          snapshot->dimension = D;
+                          snapshot->points_version = s.version();
+                          snapshot->settings = s.settings();
+                          snapshot->grid_origin = to_3d_vector<D>(s.grid().origin());
+                          for (const Vec<D>& h : s.handles()) snapshot->handles.push_back(to_3d_vector<D>(h));
+                          snapshot->can_undo = s.can_undo();
+                          snapshot->can_redo = s.can_redo();
+                          snapshot->recorded_steps = s.recording().steps().size();
+                          snapshot->replay_note = s.recording().inexact_reason();
+                          snapshot->replay_no_resample = s.recording().no_resample();
+                          // Points, quality and curve are derived once per point set.
+                          const bool same = derived_ && derived_version_ == s.version() && derived_load_ == load_id_;
+                          if (same) {
+                            snapshot->points = derived_->points;
+                            snapshot->spacing_h = derived_->spacing_h;
+                            snapshot->spacing = derived_->spacing;
+                            snapshot->curve = derived_->curve;
+                          } else {
+                            snapshot->points = points_3d(s.points());
+                            SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing);
+                            snapshot->spacing_h = std::move(quality.spacing_h);
+                            snapshot->spacing = quality.stats;
+                            if (derived_ && derived_load_ == load_id_) snapshot->curve = derived_->curve;
+                          }
+                          if constexpr (D == 2) {
+                            const bool stale = curve_version_ != s.version() || derived_load_ != load_id_;
+                            const bool due = queue_.size() == 0 ||
+                                             now - last_trace_ > std::chrono::duration<double>(options_.curve_interval);
+                            if (!curve_enabled_) {
+                              snapshot->curve.clear();
+                              curve_version_ = ~std::uint64_t{0};
+                            } else if (stale && due) {
+                              snapshot->curve = trace_curve(s.evaluable_surface(), s.pool()).segments;
+                              curve_version_ = s.version();
+                              last_trace_ = now;
+                            }
+                          }
+                          derived_version_ = s.version();
+                        }},
+             session_);
+  derived_load_ = load_id_;
+  derived_ = snapshot;
+  std::lock_guard lock(mutex_);
+  snapshot_ = std::move(snapshot);
+}
+
+}  // namespace amls::editor

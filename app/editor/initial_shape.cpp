@@ -1,0 +1,108 @@
+#include "app/editor/initial_shape.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "app/editor/scene_start.hpp"
+#include "core/metrics.hpp"
+#include "core/point_set_io.hpp"
+#include "core/shapes.hpp"
+
+namespace amls::editor {
+
+namespace {
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+void check_builtin(double radius, std::size_t points, double spacing, std::size_t least) {
+  require(radius > 0.0 && std::isfinite(radius), "shape radius must be a positive number");
+  require(points >= least, "a built-in shape needs at least " + std::to_string(least) + " points");
+  require(spacing > 0.0 && std::isfinite(spacing), "grid spacing h must be a positive number");
+}
+
+InitialShape builtin(ShapeSource::Type type, double radius, std::size_t points, double spacing) {
+  InitialShape shape;
+  shape.source.type = type;
+  shape.source.radius = radius;
+  shape.source.points = points;
+  shape.settings.spacing = spacing;
+  return shape;
+}
+
+// x rounded to `digits` significant digits.
+double round_significant(double x, int digits) {
+  const double scale = std::pow(10.0, digits - 1 - static_cast<int>(std::floor(std::log10(x))));
+  return std::round(x * scale) / scale;
+}
+
+// The median distance from a point to its nearest neighbour.
+template <int D>
+double median_spacing(const PointSet<D>& points) {
+  Vec<D> lo = points.positions.front(), hi = lo;
+  for (const Vec<D>& p : points.positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  // A first guess of the spacing: the box's diagonal spread over the points along a curve or surface.
+  const double n = static_cast<double>(points.size());
+  const double guess = std::max((hi - lo).norm() / (D == 2 ? n : std::sqrt(n)), 1e-12);
+  return spacing_stats(points, guess).median * guess;
+}
+
+}  // namespace
+
+InitialShape make_circle(double radius, std::size_t points, double spacing) {
+  check_builtin(radius, points, spacing, 3);
+  InitialShape shape = builtin(ShapeSource::Type::circle, radius, points, spacing);
+  shape.dimension = 2;
+  shape.points = to_3d(sample_circle(Vec<2>::Zero(), radius, points));
+  shape.name = "circle of " + std::to_string(points) + " points";
+  return shape;
+}
+
+InitialShape make_sphere(double radius, std::size_t points, double spacing) {
+  check_builtin(radius, points, spacing, 4);
+  InitialShape shape = builtin(ShapeSource::Type::sphere, radius, points, spacing);
+  shape.dimension = 3;
+  shape.points = sample_sphere(Vec<3>::Zero(), radius, points);
+  shape.name = "sphere of " + std::to_string(points) + " points";
+  return shape;
+}
+
+InitialShape default_shape(int dimension) {
+  return dimension == 3 ? make_sphere(1.0, 10000, 0.04) : make_circle(1.0, 250, 0.024);
+}
+
+InitialShape load_point_set_file(const std::string& path) {
+  LoadedPointSet loaded = read_point_set(path);
+  if (loaded.points.empty()) throw std::runtime_error(path + ": the file holds no points");
+  if (!loaded.has_normals)
+    throw std::runtime_error(path +
+                             ": the points have no normals, and the editor needs oriented normals (x y z nx ny nz)");
+  if (loaded.points.size() < 2) throw std::runtime_error(path + ": a surface needs more than one point");
+  InitialShape shape;
+  shape.dimension = loaded.dimension;
+  shape.source.type = ShapeSource::Type::file;
+  shape.source.path = path;
+  const double spacing = loaded.dimension == 2 ? median_spacing(to_2d(loaded.points)) : median_spacing(loaded.points);
+  if (!(spacing > 0.0)) throw std::runtime_error(path + ": the points all lie at one position");
+  shape.settings.spacing = round_significant(spacing, 3);
+  shape.points = std::move(loaded.points);
+  shape.name = std::filesystem::path(path).filename().string();
+  shape.warnings = std::move(loaded.warnings);
+  return shape;
+}
+
+InitialShape load_initial_shape(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".json") return load_scene_start(path);
+  return load_point_set_file(path);
+}
+
+}  // namespace amls::editor

@@ -1,0 +1,29 @@
+#pragma once
+// The shapes a session starts from: built-in circles and spheres, point-set
+// files and scenes. No GL.
+#include <cstddef>
+#include <string>
+
+#include "app/editor/surface_settings.hpp"
+
+namespace amls::editor {
+
+// Built-in shapes centred at the origin with outward normals. Throws
+// std::invalid_argument for a radius, count or spacing out of range.
+InitialShape make_circle(double radius, std::size_t points, double spacing);
+InitialShape make_sphere(double radius, std::size_t points, double spacing);
+
+// What the editor opens without a file: the paper's circle of 250 points
+// (h = 0.024, as the clover scene), or a sphere of 10 000 points (h = 0.04).
+InitialShape default_shape(int dimension);
+
+// A point set with oriented normals (.ply, .xyz), 2D or 3D; h is the points'
+// median nearest-neighbour distance (3 significant digits). Throws
+// std::runtime_error naming the file for a file that cannot be read, is empty
+// or has no normals.
+InitialShape load_point_set_file(const std::string& path);
+
+// A scene (.json) or a point-set file, by the extension.
+InitialShape load_initial_shape(const std::string& path);
+
+}  // namespace amls::editor

@@ -1,0 +1,62 @@
+#pragma once
+// What the editor's worker hands to the UI: immutable snapshots of the
+// session, its progress while it works, and messages for the status line. No GL.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/editor/surface_settings.hpp"
+#include "core/curve_tracing.hpp"
+#include "core/deforming_surface.hpp"
+#include "core/metrics.hpp"
+
+namespace amls::editor {
+
+struct Snapshot {
+  std::uint64_t generation = 0;      // increases with every snapshot
+  std::uint64_t processed = 0;       // the sequence number of the last command applied
+  std::uint64_t load_id = 0;         // changes when a new shape is loaded (the view refits)
+  std::uint64_t points_version = 0;  // changes when the point set does (the UI uploads it again)
+  int dimension = 0;                 // 0: nothing loaded yet
+  std::string name;
+
+  PointSet<3> points;               // 2D: z = 0
+  std::vector<double> spacing_h;    // each point's nearest-neighbour distance / h
+  SpacingStats spacing;             // of spacing_h
+  std::vector<Vec<3>> handles;      // 2D: z = 0
+  std::vector<CurveSegment> curve;  // 2D: the MLS curve F = 0, when traced
+  SurfaceSettings settings;
+  Vec<3> grid_origin = Vec<3>::Zero();
+
+  // The paper's Table 1, live: the last step's phases and the totals since the load.
+  bool has_last = false;
+  StepStats last;
+  PhaseTimings total;
+  std::size_t steps = 0;          // deformation steps since the load
+  std::size_t cancelled = 0;      // edits stopped between phases since the worker started
+  double steps_per_second = 0.0;  // over the last second of steps
+
+  bool can_undo = false;
+  bool can_redo = false;
+  std::size_t recorded_steps = 0;  // what Save Scene would write
+  std::string replay_note;         // empty if `amls deform` replays the session exactly
+  bool replay_no_resample = false;
+};
+
+// The worker at this moment.
+struct WorkerStatus {
+  bool busy = false;
+  std::string activity;  // "deforming", "resampling", ...
+  int phase = 0;         // of `phases`, from 0
+  int phases = 0;
+  double seconds = 0.0;  // since the running command started
+  std::size_t queued = 0;
+};
+
+struct Message {
+  enum class Level { info, warning, error };
+  Level level = Level::info;
+  std::string text;
+};
+
+}  // namespace amls::editor

@@ -1,0 +1,34 @@
+#include "app/editor/surface_settings.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace amls::editor {
+
+namespace {
+
+void require_positive(double value, const char* what) {
+  if (!(value > 0.0) || !std::isfinite(value))
+    throw std::invalid_argument(std::string(what) + " must be a positive number, got " + std::to_string(value));
+}
+
+}  // namespace
+
+void validate(const SurfaceSettings& settings) {
+  require_positive(settings.spacing, "grid spacing h");
+  require_positive(settings.radius_factor, "radius factor (Delta / h)");
+  require_positive(settings.alpha, "MLS alpha");
+}
+
+// Indexed by MlsKind (affine, similarity, rigid).
+constexpr const char* kKindNames[] = {"affine", "similarity", "rigid"};
+
+const char* kind_name(MlsKind kind) { return kKindNames[static_cast<int>(kind)]; }
+
+MlsKind kind_from_name(const std::string& name) {
+  for (MlsKind kind : {MlsKind::affine, MlsKind::similarity, MlsKind::rigid})
+    if (name == kind_name(kind)) return kind;
+  throw std::invalid_argument("unknown MLS kind '" + name + "' (expected affine, similarity or rigid)");
+}
+
+}  // namespace amls::editor

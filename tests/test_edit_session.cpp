@@ -1,0 +1,221 @@
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "app/editor/edit_session.hpp"
+#include "app/editor/initial_shape.hpp"
+#include "core/shapes.hpp"
+#include "editor_test_support.hpp"
+
+using namespace amls;
+using namespace amls::editor;
+
+namespace {
+
+const WorkControl kRunAll{};
+
+std::pair<double, double> x_range(const PointSet<2>& points) {
+  double lo = 1e300, hi = -1e300;
+  for (const Vec<2>& p : points.positions) {
+    lo = std::min(lo, p.x());
+    hi = std::max(hi, p.x());
+  }
+  return {lo, hi};
+}
+
+// The unit circle with handles on its left and right ends.
+EditSession<2> circle_with_two_handles() {
+  EditSession<2> session(make_circle(1.0, 250, 0.024), 1);
+  session.add_handle(Vec<2>(-1.0, 0.0));
+  session.add_handle(Vec<2>(1.0, 0.0));
+  return session;
+}
+
+// Drags the right handle to x in `moves` steps.
+void drag_right_handle(EditSession<2>& session, double x, int moves) {
+  session.begin_drag();
+  const double x0 = session.handles()[1].x();
+  for (int k = 1; k <= moves; ++k) {
+    std::vector<Vec<2>> to = session.handles();
+    to[1].x() = x0 + (x - x0) * k / moves;
+    REQUIRE(session.move_handles(to, kRunAll).stepped);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("dragging one handle of two stretches the circle towards it and keeps the other end") {
+  EditSession<2> session = circle_with_two_handles();
+  drag_right_handle(session, 1.5, 5);
+  const auto [lo, hi] = x_range(session.points());
+  CHECK(hi == doctest::Approx(1.5).epsilon(0.01));
+  CHECK(lo == doctest::Approx(-1.0).epsilon(0.01));
+  // The resampled curve stays sampled at about h.
+  CHECK(session.points().size() > 250);
+}
+
+TEST_CASE("undo restores the point set and handles of the drag's start exactly; redo its end") {
+  EditSession<2> session = circle_with_two_handles();
+  drag_right_handle(session, 1.3, 3);
+  const PointSet<2> before = session.points();
+  const auto handles_before = session.handles();
+  drag_right_handle(session, 1.6, 3);
+  const PointSet<2> after = session.points();
+  REQUIRE(session.undo());
+  CHECK(session.points().positions == before.positions);
+  CHECK(session.points().normals == before.normals);
+  CHECK(session.handles() == handles_before);
+  REQUIRE(session.redo());
+  CHECK(session.points().positions == after.positions);
+  CHECK(session.handles()[1].x() == 1.6);
+}
+
+TEST_CASE("Esc (cancel_drag) returns to the drag's start and leaves nothing to redo") {
+  EditSession<2> session = circle_with_two_handles();
+  const PointSet<2> start = session.points();
+  drag_right_handle(session, 1.4, 2);
+  REQUIRE(session.cancel_drag());
+  CHECK(session.points().positions == start.positions);
+  CHECK(session.handles()[1].x() == 1.0);
+  CHECK(!session.can_redo());
+  CHECK(session.recording().steps().empty());
+}
+
+TEST_CASE("a step stopped between its phases leaves the session as before it") {
+  EditSession<2> session = circle_with_two_handles();
+  const PointSet<2> start = session.points();
+  for (int stop_after : {-1, 0, 1}) {  // before the first, second and third phase
+    int phases = 0;
+    const WorkControl control{[&] { return phases > stop_after; }, [&](const char*, int, int) { ++phases; }};
+    std::vector<Vec<2>> to = session.handles();
+    to[1].x() = 1.3;
+    const EditResult result = session.move_handles(to, control);
+    CHECK(result.cancelled);
+    CHECK(!result.changed);
+    CHECK(session.points().positions == start.positions);
+    CHECK(session.handles()[1].x() == 1.0);
+    CHECK(session.recording().steps().empty());
+  }
+  // And the next step runs as if nothing had happened.
+  std::vector<Vec<2>> to = session.handles();
+  to[1].x() = 1.3;
+  CHECK(session.move_handles(to, kRunAll).stepped);
+}
+
+TEST_CASE("a step reports its phases: resample the loaded points, deform, resample") {
+  EditSession<2> session = circle_with_two_handles();
+  std::vector<std::string> names;
+  const WorkControl control{{}, [&](const char* name, int, int) { names.push_back(name); }};
+  std::vector<Vec<2>> to = session.handles();
+  to[1].x() = 1.1;
+  session.move_handles(to, control);
+  CHECK(names == std::vector<std::string>{"resampling", "deforming", "resampling"});
+  names.clear();
+  to[1].x() = 1.2;
+  session.move_handles(to, control);
+  CHECK(names == std::vector<std::string>{"deforming", "resampling"});
+}
+
+TEST_CASE("toggling the variant resamples the surface at once, without deforming it") {
+  EditSession<2> session(make_circle(1.0, 250, 0.024), 1);
+  const PointSet<2> exact_points = session.points();
+  const EditResult result = session.set_variant(Variant::interpolated, kRunAll);
+  CHECK(result.changed);
+  CHECK(result.has_stats);
+  CHECK(session.points().positions != exact_points.positions);
+  for (const Vec<2>& p : session.points().positions) CHECK(std::abs(p.norm() - 1.0) < 0.01);
+  CHECK(session.can_undo());
+  session.undo();
+  CHECK(session.settings().variant == Variant::exact);
+  CHECK(session.points().positions == exact_points.positions);
+}
+
+TEST_CASE("without resampling a step only deforms, so the points spread apart") {
+  EditSession<2> session = circle_with_two_handles();
+  session.set_resampling(false);
+  const std::size_t n = session.points().size();
+  drag_right_handle(session, 2.0, 2);
+  CHECK(session.points().size() == n);
+  CHECK(x_range(session.points()).second == doctest::Approx(2.0).epsilon(0.01));
+}
+
+TEST_CASE("handles: removing and adding are undoable, a bad index is refused") {
+  EditSession<2> session = circle_with_two_handles();
+  CHECK_THROWS_AS(session.remove_handle(2), std::out_of_range);
+  session.remove_handle(0);
+  CHECK(session.handles().size() == 1);
+  session.undo();
+  CHECK(session.handles().size() == 2);
+  std::vector<Vec<2>> wrong(3, Vec<2>::Zero());
+  CHECK_THROWS_AS(session.move_handles(wrong, kRunAll), std::invalid_argument);
+}
+
+TEST_CASE("a grid change resamples at the new spacing; reset goes back to the initial shape") {
+  EditSession<2> session = circle_with_two_handles();
+  drag_right_handle(session, 1.3, 2);
+  session.set_grid(0.012, 3.0, kRunAll);
+  CHECK(session.settings().spacing == 0.012);
+  CHECK(session.points().size() > 450);
+  session.reset();
+  CHECK(session.points().size() == 250);
+  CHECK(session.handles().empty());
+  CHECK(session.settings().spacing == 0.012);
+  CHECK(session.recording().steps().empty());
+  session.undo();
+  CHECK(session.points().size() > 450);
+}
+
+TEST_CASE("a grid spacing that would make millions of points is refused and changes nothing") {
+  EditSession<3> session(make_sphere(1.0, 2000, 0.08), 1);
+  const PointSet<3> before = session.points();
+  CHECK_THROWS_WITH_AS(session.set_grid(0.0001, 3.0, kRunAll), doctest::Contains("larger grid spacing"),
+                       std::invalid_argument);
+  CHECK(session.settings().spacing == 0.08);
+  CHECK(session.points().positions == before.positions);
+  CHECK(!session.can_undo());
+}
+
+TEST_CASE("a session of handle drags, handle changes, an undo and an Esc replays exactly as amls deform runs it") {
+  EditSession<2> session = circle_with_two_handles();
+  const PointSet<2> initial = sample_circle(Vec<2>::Zero(), 1.0, 250);
+  drag_right_handle(session, 1.3, 4);
+  session.add_handle(Vec<2>(0.0, 1.0));  // a new stage
+  session.begin_drag();
+  std::vector<Vec<2>> to = session.handles();
+  for (double y : {1.1, 1.25, 1.4}) {
+    to[2].y() = y;
+    session.move_handles(to, kRunAll);
+  }
+  drag_right_handle(session, 1.8, 2);
+  session.undo();                      // drops the last drag
+  drag_right_handle(session, 1.1, 3);  // and Esc drops this one
+  session.cancel_drag();
+  session.remove_handle(0);  // another stage
+  drag_right_handle(session, 1.5, 2);
+
+  const SessionRecording<2>& recording = session.recording();
+  REQUIRE(recording.exact());
+  CHECK(recording.steps().size() == 4 + 3 + 2);
+  CHECK(recording.stages().size() == 3);
+  const PointSet<2> replayed = amls::test::replay_like_amls_deform(initial, recording);
+  CHECK(replayed.positions == session.points().positions);
+  CHECK(replayed.normals == session.points().normals);
+}
+
+TEST_CASE("a 3D session replays exactly too") {
+  EditSession<3> session(make_sphere(1.0, 2000, 0.08), 1);
+  session.add_handle(Vec<3>(0.0, 0.0, 1.0));
+  session.add_handle(Vec<3>(0.0, 0.0, -1.0));
+  session.set_deformation(MlsKind::similarity, 1.5);
+  session.begin_drag();
+  std::vector<Vec<3>> to = session.handles();
+  for (double z : {1.1, 1.25}) {
+    to[0].z() = z;
+    session.move_handles(to, kRunAll);
+  }
+  REQUIRE(session.recording().exact());
+  CHECK(session.recording().settings().kind == MlsKind::similarity);
+  const PointSet<3> replayed =
+      amls::test::replay_like_amls_deform(sample_sphere(Vec<3>::Zero(), 1.0, 2000), session.recording());
+  CHECK(replayed.positions == session.points().positions);
+}

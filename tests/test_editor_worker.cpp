@@ -1,0 +1,236 @@
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "app/editor/editor_worker.hpp"
+#include "app/editor/scene_start.hpp"
+#include "core/point_set_io.hpp"
+#include "editor_test_support.hpp"
+
+using namespace amls;
+using namespace amls::editor;
+using namespace std::chrono_literals;
+
+namespace {
+
+// Generous: the tests also run under ThreadSanitizer, many times slower.
+constexpr auto kPatience = 120s;
+
+command::LoadShape circle() { return {2, 1.0, 250, 0.024}; }
+// A sphere whose steps take a while (tenths of a second; seconds under TSan).
+command::LoadShape heavy_sphere() { return {3, 1.0, 20000, 0.03}; }
+
+bool has_message(const std::vector<Message>& messages, Message::Level level, const std::string& part) {
+  for (const Message& m : messages)
+    if (m.level == level && m.text.find(part) != std::string::npos) return true;
+  return false;
+}
+
+// Waits until the worker runs the given phase of its command.
+bool wait_for_phase(const EditorWorker& worker, const std::string& activity, int phase) {
+  const auto deadline = std::chrono::steady_clock::now() + kPatience;
+  while (std::chrono::steady_clock::now() < deadline) {
+    const WorkerStatus s = worker.status();
+    if (s.busy && s.activity == activity && s.phase == phase) return true;
+    std::this_thread::sleep_for(1ms);
+  }
+  return false;
+}
+
+// Posts a drag of handle `index` of `handles` along x by `dx`, in `moves` moves.
+void drag(EditorWorker& worker, std::vector<Vec<3>> handles, std::size_t index, double dx, int moves) {
+  worker.post(command::BeginDrag{});
+  const double x0 = handles[index].x();
+  for (int k = 1; k <= moves; ++k) {
+    handles[index].x() = x0 + dx * k / moves;
+    worker.post(command::MoveHandles{handles});
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the worker applies commands in order and each snapshot says which command it includes") {
+  EditorWorker worker;
+  CHECK(worker.snapshot()->dimension == 0);
+  worker.post(circle());
+  worker.post(command::AddHandle{Vec<3>(-1, 0, 0)});
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  drag(worker, {Vec<3>(-1, 0, 0), Vec<3>(1, 0, 0)}, 1, 0.3, 1);
+  const std::uint64_t last = worker.post(command::Export{"/nonexistent-folder/x.ply"});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto snapshot = worker.snapshot();
+  CHECK(snapshot->processed == last);
+  CHECK(snapshot->dimension == 2);
+  REQUIRE(snapshot->handles.size() == 2);
+  CHECK(snapshot->handles[1].x() == doctest::Approx(1.3));
+  CHECK(snapshot->steps == 1);
+  CHECK(snapshot->has_last);
+  CHECK(snapshot->last.timings.total() > 0.0);
+  CHECK(snapshot->spacing_h.size() == snapshot->points.size());
+  CHECK(!snapshot->curve.empty());
+  CHECK(snapshot->can_undo);
+  CHECK(snapshot->recorded_steps == 1);
+  CHECK(snapshot->replay_note.empty());
+  const auto messages = worker.take_messages();
+  CHECK(has_message(messages, Message::Level::info, "Loaded circle"));
+  CHECK(has_message(messages, Message::Level::error, "Export failed"));
+  CHECK(worker.take_messages().empty());
+}
+
+TEST_CASE("a drag's moves coalesce: fewer steps than moves, ending at the newest position") {
+  EditorWorker worker;
+  worker.post(command::LoadShape{3, 1.0, 4000, 0.06});
+  worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
+  drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.5, 60);
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto snapshot = worker.snapshot();
+  CHECK(snapshot->handles[0].x() == doctest::Approx(0.5));
+  CHECK(snapshot->steps >= 1);
+  CHECK(snapshot->steps < 60);
+  CHECK(snapshot->recorded_steps == snapshot->steps);
+}
+
+TEST_CASE("a load cancels a running step between its phases, and the new shape replaces the old") {
+  EditorWorker worker;
+  worker.post(heavy_sphere());
+  worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
+  drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 1);
+  REQUIRE(wait_for_phase(worker, "resampling", 0));  // the step's first phase
+  worker.post(circle());
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto snapshot = worker.snapshot();
+  CHECK(snapshot->cancelled == 1);
+  CHECK(snapshot->dimension == 2);
+  CHECK(snapshot->points.size() == 250);
+  CHECK(snapshot->steps == 0);
+}
+
+TEST_CASE("a parameter change cancels a running step; the state is as before the step, then changed") {
+  EditorWorker worker;
+  worker.post(heavy_sphere());
+  worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const std::size_t loaded_points = worker.snapshot()->points.size();
+  drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 1);
+  REQUIRE(wait_for_phase(worker, "resampling", 0));
+  worker.post(command::SetDeformation{MlsKind::similarity, 1.0});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto snapshot = worker.snapshot();
+  CHECK(snapshot->cancelled == 1);
+  CHECK(snapshot->settings.kind == MlsKind::similarity);
+  CHECK(snapshot->handles[0].x() == 0.0);
+  CHECK(snapshot->points.size() == loaded_points);
+  CHECK(snapshot->steps == 0);
+}
+
+TEST_CASE("the worker shuts down cleanly while a step runs") {
+  const auto begin = std::chrono::steady_clock::now();
+  {
+    EditorWorker worker;
+    worker.post(heavy_sphere());
+    worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
+    drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 5);
+    REQUIRE(wait_for_phase(worker, "resampling", 0));
+  }  // the destructor stops the step at its next phase and joins
+  CHECK(std::chrono::steady_clock::now() - begin < kPatience);
+}
+
+TEST_CASE("a file that cannot be loaded is reported and the current surface stays") {
+  amls::test::TempDir dir;
+  const std::string bad = dir.file("bad.ply");
+  std::ofstream(bad) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n";
+  EditorWorker worker;
+  worker.post(circle());
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto before = worker.snapshot();
+  worker.take_messages();
+  worker.post(command::LoadFile{bad});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto after = worker.snapshot();
+  CHECK(after->load_id == before->load_id);
+  CHECK(after->points.positions == before->points.positions);
+  CHECK(has_message(worker.take_messages(), Message::Level::error, "bad.ply"));
+}
+
+TEST_CASE("export writes the current point set; a failed export leaves the previous file intact") {
+  amls::test::TempDir dir;
+  const std::string out = dir.file("out.ply");
+  EditorWorker worker;
+  worker.post(circle());
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  drag(worker, {Vec<3>(1, 0, 0)}, 0, 0.5, 2);  // one handle: a translation
+  worker.post(command::Export{out});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const LoadedPointSet written = read_point_set(out);
+  CHECK(written.dimension == 2);
+  CHECK(written.has_normals);
+  CHECK(written.points.positions == worker.snapshot()->points.positions);
+  CHECK(has_message(worker.take_messages(), Message::Level::info, "Exported"));
+
+  const auto bytes = std::filesystem::file_size(out);
+  const auto modified = std::filesystem::last_write_time(out);
+  worker.post(command::Export{dir.file("out.stl")});       // an unknown format
+  std::filesystem::create_directory(dir.file("out.xyz"));  // a folder where the file should go
+  worker.post(command::Export{dir.file("out.xyz")});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto messages = worker.take_messages();
+  CHECK(has_message(messages, Message::Level::error, "out.stl"));
+  CHECK(has_message(messages, Message::Level::error, "out.xyz"));
+  CHECK(std::filesystem::file_size(out) == bytes);
+  CHECK(std::filesystem::last_write_time(out) == modified);
+  CHECK(std::filesystem::is_directory(dir.file("out.xyz")));
+}
+
+TEST_CASE("Save Scene writes the session's steps as a scene whose start reads back") {
+  amls::test::TempDir dir;
+  const std::string path = dir.file("session.json");
+  EditorWorker worker;
+  worker.post(circle());
+  worker.post(command::SaveScene{path});  // nothing recorded yet
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  drag(worker, {Vec<3>(1, 0, 0)}, 0, 0.2, 3);
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(has_message(worker.take_messages(), Message::Level::error, "nothing to save"));
+  CHECK(!std::filesystem::exists(path));
+  const std::size_t steps = worker.snapshot()->steps;
+  worker.post(command::SaveScene{path});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(has_message(worker.take_messages(), Message::Level::info, "Saved the scene"));
+  std::ifstream in(path);
+  const nlohmann::json scene = nlohmann::json::parse(in);
+  CHECK(scene["stages"].size() == 1);
+  CHECK(scene["stages"][0]["targets"].size() == steps);
+  const InitialShape start = load_scene_start(path);
+  CHECK(start.points.size() == 250);
+  CHECK(start.settings.spacing == 0.024);
+  CHECK(start.handles.at(0).x() == 1.0);
+}
+
+TEST_CASE("undo and redo through the worker restore the drag's start and end") {
+  EditorWorker worker;
+  worker.post(circle());
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const PointSet<3> start = worker.snapshot()->points;
+  drag(worker, {Vec<3>(1, 0, 0)}, 0, 0.4, 3);
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const PointSet<3> end = worker.snapshot()->points;
+  worker.post(command::Undo{});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(worker.snapshot()->points.positions == start.positions);
+  CHECK(worker.snapshot()->handles[0].x() == 1.0);
+  worker.post(command::Redo{});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(worker.snapshot()->points.positions == end.positions);
+}
+
+TEST_CASE("handle commands before anything is loaded are refused politely") {
+  EditorWorker worker;
+  worker.post(command::AddHandle{Vec<3>::Zero()});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(has_message(worker.take_messages(), Message::Level::warning, "Nothing is loaded"));
+}
