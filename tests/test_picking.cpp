@@ -62,6 +62,14 @@ TEST_CASE("a point is picked within the radius, the nearest on screen; none fart
   CHECK(!pick_point(points, {}, c, kViewport, window_of(c, points[2]) + glm::vec2(20.0f, 0.0f), 6.0f));
 }
 
+TEST_CASE("zoomed in, a click anywhere on a splat picks its point") {
+  const Camera c = orbit_camera();
+  const std::vector<glm::vec3> points{{0.0f, 0.0f, 0.5f}};
+  const glm::vec2 off_centre = window_of(c, glm::vec3(0.08f, 0.0f, 0.5f));  // tens of pixels away
+  CHECK(!pick_point(points, {}, c, kViewport, off_centre, 6.0f));
+  CHECK(pick_point(points, {}, c, kViewport, off_centre, 6.0f, 0.1f) == std::optional<std::size_t>(0));
+}
+
 TEST_CASE("a click on a closed surface picks its front, not the back point behind it") {
   const Camera c = orbit_camera();  // looking down -z: the front is at z = +1
   const std::vector<glm::vec3> points{{0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 1.0f}};

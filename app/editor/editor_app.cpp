@@ -168,7 +168,10 @@ void EditorApp::take_snapshot() {
       } catch (const std::exception& e) {
         ui_.tell({Message::Level::error, std::string("Cannot show the points: ") + e.what()});
       }
-      view_.set_points(next->points);
+      // In 3D a click anywhere on a splat picks its point (splats are RenderOptions::splat_scale h wide).
+      view_.set_points(next->points, next->dimension == 3
+                                         ? ui_.render.splat_scale * static_cast<float>(next->settings.spacing)
+                                         : 0.0f);
     }
     if (next->dimension == 2) {
       std::vector<glm::vec2> ends;

@@ -29,8 +29,8 @@ Ray pixel_ray(const Camera& camera, const Viewport& viewport, glm::vec2 pixel) {
 }
 
 std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const Viewport& viewport, glm::vec2 pixel,
-                                      float radius_px) {
+                                      const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float radius_px,
+                                      float world_radius) {
   const glm::vec3 eye = camera.eye();
   const bool perspective = camera.mode == Camera::Mode::orbit;
   // First pass: the nearest eye distance among front-facing candidates (any candidate if none faces the viewer).
@@ -41,11 +41,15 @@ std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std:
   };
   std::vector<Candidate> candidates;
   const float r2 = radius_px * radius_px;
+  const glm::mat4 view = camera.view();
+  const glm::vec3 right = world_radius * glm::vec3(view[0][0], view[1][0], view[2][0]);
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const glm::vec3 w = camera.to_window(positions[i], viewport);
     if (w.z < 0.0f || w.z > 1.0f) continue;
     const float d2 = squared(glm::vec2(w) - pixel);
-    if (d2 > r2) continue;
+    if (d2 > r2 && (world_radius <= 0.0f ||
+                    d2 > squared(glm::vec2(camera.to_window(positions[i] + right, viewport)) - glm::vec2(w))))
+      continue;
     candidates.push_back({i, d2, perspective ? glm::length(positions[i] - eye) : -positions[i].z});
   }
   if (candidates.empty()) return std::nullopt;

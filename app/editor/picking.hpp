@@ -21,11 +21,14 @@ struct Ray {
 // The ray from the eye through a pixel (planar views: straight down -z).
 Ray pixel_ray(const Camera& camera, const Viewport& viewport, glm::vec2 pixel);
 
-// The point nearest to `pixel` on screen, within `radius_px`. Of points at
+// The point nearest to `pixel` on screen, within `radius_px` - or within the
+// size on screen of a splat of radius `world_radius` around it, if that is
+// larger (zoomed in, a click anywhere on a splat picks its point). Of points at
 // about the same distance on screen, one facing the viewer and near the eye
 // wins, so a click on a closed surface picks its front. `normals` may be empty.
 std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float radius_px);
+                                      const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float radius_px,
+                                      float world_radius = 0.0f);
 
 // The handle nearest to `pixel` on screen within `radius_px`.
 std::optional<std::size_t> pick_handle(std::span<const glm::vec3> handles, const Camera& camera,

@@ -39,8 +39,9 @@ void ViewController::fit(const BoundingSphere& bounds, const Viewport& viewport)
   camera_.fit(BoundingSphere{bounds.center, 1.12f * bounds.radius}, viewport.aspect());
 }
 
-void ViewController::set_points(const PointSet<3>& points) {
+void ViewController::set_points(const PointSet<3>& points, float splat_radius) {
   points_ = points;
+  splat_radius_ = splat_radius;
   positions_.clear();
   normals_.clear();
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -63,7 +64,7 @@ std::vector<glm::vec3> ViewController::handle_positions() const {
 }
 
 std::optional<std::size_t> ViewController::pick_surface(glm::vec2 pixel, const Viewport& viewport) const {
-  return pick_point(positions_, normals_, camera_, viewport, pixel, pick_radius_px_);
+  return pick_point(positions_, normals_, camera_, viewport, pixel, pick_radius_px_, splat_radius_);
 }
 
 void ViewController::on_event(const InputEvent& event, const Viewport& viewport, glm::vec2 pixels_per_unit) {

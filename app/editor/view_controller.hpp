@@ -29,8 +29,9 @@ class ViewController {
   void start(int dimension, const BoundingSphere& bounds, const Viewport& viewport);
   void fit(const BoundingSphere& bounds, const Viewport& viewport);
 
-  // The surface's points for picking (positions in double for new handles).
-  void set_points(const PointSet<3>& points);
+  // The surface's points for picking (positions in double for new handles);
+  // `splat_radius` (world units, 0 for none) lets a click anywhere on a splat pick it.
+  void set_points(const PointSet<3>& points, float splat_radius);
   // The worker's handles; taken unless a drag is running (the caller knows the
   // worker has applied every command sent).
   void sync_handles(const std::vector<Vec<3>>& handles);
@@ -95,6 +96,7 @@ class ViewController {
   AxisLock lock_ = AxisLock::none;
   glm::vec2 cursor_{-1.0f};
   float pick_radius_px_ = 8.0f;
+  float splat_radius_ = 0.0f;
 };
 
 }  // namespace amls::editor
