@@ -1,37 +1,18 @@
 #pragma once
-// Helpers for the editor's GL-free tests: a temporary folder, and the replay
-// of a recorded session the way `amls deform` runs a scene.
+// Helpers for the editor's GL-free tests: the replay of a recorded session
+// the way `amls deform` runs a scene (and TempDir, from temp_dir.hpp).
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 
 #include "app/editor/session_recording.hpp"
+#include "temp_dir.hpp"
 #include "core/deforming_surface.hpp"
 #include "core/mls_deformation.hpp"
 #include "core/point_set_resampling.hpp"
 
 namespace amls::test {
-
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "amls-editor-test-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot make a temporary folder");
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 // The loop of `amls deform` (core/scene_run.cpp on the scenes branch): R(P0),
 // then for each step D and R (without resampling: only the D's), on the grid

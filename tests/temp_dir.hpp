@@ -1,20 +1,21 @@
 #pragma once
 // A fresh directory under the system's temporary directory, removed with everything in it.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <random>
+#include <stdexcept>
 #include <string>
 
 namespace amls::test {
 
 class TempDir {
  public:
+  // mkdtemp creates the directory under a name no other process holds.
   TempDir() {
-    std::random_device entropy;
-    path_ = std::filesystem::temp_directory_path() /
-            ("amls_test_" + std::to_string(entropy()) + std::to_string(entropy()));
-    std::filesystem::create_directory(path_);
+    std::string pattern = (std::filesystem::temp_directory_path() / "amls_test_XXXXXX").string();
+    if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot make a temporary folder");
+    path_ = pattern;
   }
   ~TempDir() {
     std::error_code ignored;
