@@ -152,7 +152,7 @@ InitialShape load_scene_start(const std::string& path) {
   if (scene.contains("deformation")) {
     const json& deformation = r.object(scene, "deformation");
     try {
-      settings.kind = kind_from_name(r.text(deformation, "kind", "rigid"));
+      settings.kind = parse_mls_kind(r.text(deformation, "kind", "rigid"));
     } catch (const std::invalid_argument& e) {
       r.fail("deformation.kind", e.what());
     }

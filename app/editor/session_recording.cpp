@@ -127,7 +127,7 @@ ordered_json scene_json(const SessionRecording<D>& recording, const std::string&
   scene["grid"] = ordered_json{{"spacing", s.spacing}};
   scene["radius_factor"] = s.radius_factor;
   scene["variant"] = to_string(s.variant);
-  scene["deformation"] = ordered_json{{"kind", kind_name(s.kind)}, {"alpha", s.alpha}};
+  scene["deformation"] = ordered_json{{"kind", to_string(s.kind)}, {"alpha", s.alpha}};
   ordered_json stage_array = ordered_json::array();
   for (const RecordedStage<D>& stage : stages) {
     ordered_json targets = ordered_json::array();

@@ -20,15 +20,4 @@ void validate(const SurfaceSettings& settings) {
   require_positive(settings.alpha, "MLS alpha");
 }
 
-// Indexed by MlsKind (affine, similarity, rigid).
-constexpr const char* kKindNames[] = {"affine", "similarity", "rigid"};
-
-const char* kind_name(MlsKind kind) { return kKindNames[static_cast<int>(kind)]; }
-
-MlsKind kind_from_name(const std::string& name) {
-  for (MlsKind kind : {MlsKind::affine, MlsKind::similarity, MlsKind::rigid})
-    if (name == kind_name(kind)) return kind;
-  throw std::invalid_argument("unknown MLS kind '" + name + "' (expected affine, similarity or rigid)");
-}
-
 }  // namespace amls::editor

@@ -27,11 +27,6 @@ struct SurfaceSettings {
 // Throws std::invalid_argument naming the first field out of range.
 void validate(const SurfaceSettings& settings);
 
-// "affine", "similarity", "rigid" (the scene format's names).
-const char* kind_name(MlsKind kind);
-// Throws std::invalid_argument naming the accepted values.
-MlsKind kind_from_name(const std::string& name);
-
 // The initial shape as a scene's `shape` object says it.
 struct ShapeSource {
   enum class Type { circle, sphere, file };
