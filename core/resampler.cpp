@@ -4,7 +4,7 @@
 #include <span>
 #include <stdexcept>
 
-#include "core/root_finding.hpp"
+#include "core/segment_root.hpp"
 
 namespace amls {
 
@@ -13,10 +13,6 @@ namespace {
 constexpr std::uint8_t kNeeded = 1;  // the walk reads this vertex: Update_Function evaluates it
 constexpr std::uint8_t kVisited = 2;
 constexpr std::uint8_t kHaveClosePoint = 4;
-
-// Roots are located to this fraction of an edge: near machine precision for
-// coordinates of order one on grids up to a few thousand cells.
-constexpr double kRootTolerance = 1e-12;
 
 bool is_positive(double value) { return value >= 0.0; }
 
@@ -147,11 +143,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
       Crossing& x = crossings_[c];
       const Evaluation<D>& f0 = values_[x.from];
       const Evaluation<D>& f1 = values_[x.to];
-      const double linear_t = f0.value / (f0.value - f1.value);
-      x.t = linear_t;
-      Vec<D> normal = (1.0 - linear_t) * f0.gradient + linear_t * f1.gradient;
-      Vec<D> orientation = (1.0 - linear_t) * f0.mean_normal + linear_t * f1.mean_normal;
-
+      SegmentRoot<D> root;
       if (variant == Variant::exact) {
         const Vec<D> start = grid.vertex_position(field_.vertex_of(x.from));
         Vec<D> direction = Vec<D>::Zero();
@@ -162,37 +154,15 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         const std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(range.block)];
         surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), start + 0.5 * direction,
                        surface.radius() + 0.5 * h, candidates);
-        // The evaluation with the smallest |F| so far: the root's, at the end.
-        double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
-        Evaluation<D> best = best_t == 0.0 ? f0 : f1;
-        const RootResult root = find_root_illinois(
-            [&](double t) -> std::optional<double> {
-              const Evaluation<D> e = surface.evaluate_in(candidates, start + t * direction);
-              if (!e.defined) return std::nullopt;
-              if (std::abs(e.value) < std::abs(best.value)) {
-                best = e;
-                best_t = t;
-              }
-              return e.value;
-            },
-            0.0, 1.0, f0.value, f1.value, kRootTolerance, kRootTolerance * (std::abs(f0.value) + std::abs(f1.value)));
+        root = locate_segment_root<D>([&](const Vec<D>& y) { return surface.evaluate_in(candidates, y); }, start,
+                                      direction, f0, f1, x.axis);
         evaluations[static_cast<std::size_t>(block)] += static_cast<std::size_t>(root.evaluations);
-        if (root.ok) {
-          x.t = root.t;
-          if (root.t == best_t && best.gradient.squaredNorm() > 0.0) {
-            normal = best.gradient;
-            orientation = best.mean_normal;
-          }
-        } else {
-          ++fallbacks[static_cast<std::size_t>(block)];
-        }
+        fallbacks[static_cast<std::size_t>(block)] += root.fallback ? 1 : 0;
+      } else {
+        root = interpolate_segment_root(f0, f1, x.axis);
       }
-      // The normal only orients the next fit, so its orientation must be the
-      // neighbours': where the fitted sphere's gradient turns against their
-      // mean normal (a sharp or badly sampled spot), the mean normal is used.
-      if (normal.dot(orientation) <= 0.0) normal = orientation;
-      const double length = normal.norm();
-      x.normal = length > 0.0 ? Vec<D>(normal / length) : Vec<D>::Unit(x.axis);
+      x.t = root.t;
+      x.normal = root.normal;
     }
   });
   for (std::size_t b = 0; b < evaluations.size(); ++b) {

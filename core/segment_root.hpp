@@ -4,7 +4,8 @@
 // the unit normal a new point gets there: the fitted sphere's gradient at the
 // root when the root's own evaluation gave it, else the gradients of the ends
 // interpolated. Where F turns undefined inside the segment, the zero of the
-// linear interpolant of the end values is taken instead (a fallback).
+// linear interpolant of the end values is taken instead (a fallback). Used by
+// the grid walk (on grid edges) and by the ray tracer (between ray samples).
 #include <cmath>
 
 #include "core/gradient_fit.hpp"
@@ -24,14 +25,34 @@ struct SegmentRoot {
   bool fallback = false;             // F was undefined on the way: t is the interpolant's zero
 };
 
+// The unit normal a new point carries. It only orients the next fit, so its
+// orientation must be the neighbours': where the fitted sphere's gradient turns
+// against their mean normal (a sharp or badly sampled spot), the mean normal is
+// used. `fallback_axis` is the last resort for a zero vector.
+template <int D>
+Vec<D> oriented_unit_normal(Vec<D> normal, const Vec<D>& orientation, int fallback_axis) {
+  if (normal.dot(orientation) <= 0.0) normal = orientation;
+  const double length = normal.norm();
+  return length > 0.0 ? Vec<D>(normal / length) : Vec<D>::Unit(fallback_axis);
+}
+
+// The crossing by linear interpolation of the ends: the interpolated variant's
+// point, and the exact one's start (and fallback).
+template <int D>
+SegmentRoot<D> interpolate_segment_root(const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
+  SegmentRoot<D> out;
+  out.t = f0.value / (f0.value - f1.value);
+  out.normal = oriented_unit_normal<D>((1.0 - out.t) * f0.gradient + out.t * f1.gradient,
+                                       (1.0 - out.t) * f0.mean_normal + out.t * f1.mean_normal, fallback_axis);
+  return out;
+}
+
 // `evaluate(y)` returns F's Evaluation<D> at y. f0 and f1 are F at `start` and
 // `start + step`, defined and of opposite signs (a zero counts as positive).
 template <int D, typename Evaluate>
 SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, const Vec<D>& step,
                                    const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
-  SegmentRoot<D> out;
-  out.t = f0.value / (f0.value - f1.value);
-  Vec<D> normal = (1.0 - out.t) * f0.gradient + out.t * f1.gradient;
+  SegmentRoot<D> out = interpolate_segment_root(f0, f1, fallback_axis);
   // The evaluation with the smallest |F| so far: the root's, at the end.
   double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
   Evaluation<D> best = best_t == 0.0 ? f0 : f1;
@@ -48,14 +69,13 @@ SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, con
       0.0, 1.0, f0.value, f1.value, kSegmentRootTolerance,
       kSegmentRootTolerance * (std::abs(f0.value) + std::abs(f1.value)));
   out.evaluations = root.evaluations;
-  if (root.ok) {
-    out.t = root.t;
-    if (root.t == best_t && best.gradient.squaredNorm() > 0.0) normal = best.gradient;
-  } else {
+  if (!root.ok) {
     out.fallback = true;
+    return out;
   }
-  const double length = normal.norm();
-  out.normal = length > 0.0 ? Vec<D>(normal / length) : Vec<D>::Unit(fallback_axis);
+  out.t = root.t;
+  if (root.t == best_t && best.gradient.squaredNorm() > 0.0)
+    out.normal = oriented_unit_normal<D>(best.gradient, best.mean_normal, fallback_axis);
   return out;
 }
 
