@@ -95,17 +95,20 @@ template <int D>
 std::vector<double> crossings_along_ray(const AmlsSurface<D>& surface, const Vec<D>& center, const Vec<D>& u,
                                         double r_lo, double r_hi, double step) {
   std::vector<double> roots;
-  auto value_at = [&](double r) -> std::optional<double> {
+  auto value_at = [&](double r) -> std::optional<RootSample> {
     const Evaluation<D> e = surface.evaluate(center + r * u);
     if (!e.defined) return std::nullopt;
-    return e.value;
+    return RootSample{e.value, e.gradient.dot(u)};
   };
   std::optional<double> previous;
   double previous_r = r_lo;
+  RootOptions options;
+  options.tolerance = 1e-12 * step;
   for (double r = r_lo; r <= r_hi + 0.5 * step; r += step) {
-    const std::optional<double> f = value_at(r);
+    const std::optional<RootSample> sample = value_at(r);
+    const std::optional<double> f = sample ? std::optional<double>(sample->value) : std::nullopt;
     if (f && previous && ((*f >= 0.0) != (*previous >= 0.0))) {
-      const RootResult root = find_root_illinois(value_at, previous_r, r, *previous, *f, 1e-12 * step);
+      const RootResult root = find_root(value_at, previous_r, r, *previous, *f, options);
       roots.push_back(root.ok ? root.t : previous_r + (r - previous_r) * *previous / (*previous - *f));
     }
     previous = f;

@@ -10,8 +10,8 @@
 // intervals where F may be defined. In each interval F is sampled every
 // h / samples_per_cell, at the same places on every ray (vertices and, by
 // default, edge midpoints; a sample where F is undefined brackets nothing), and
-// each sign change between two consecutive samples is located by Illinois
-// regula falsi (core/segment_root.hpp): a candidate point with the fitted
+// each sign change between two consecutive samples is located by the bracketed
+// root finder of the walk (core/segment_root.hpp): a candidate point with the fitted
 // normal there. A zero counts as positive, as in the grid walk.
 //
 // The points whose chords make up an interval are exactly the points that can

@@ -1,6 +1,8 @@
 #include "core/resampler.hpp"
 
+#include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 
@@ -10,11 +12,23 @@ namespace amls {
 
 namespace {
 
+// Per-vertex flags. F's definedness and sign sit here too, so that the walk
+// reads one byte per vertex rather than the whole Evaluation.
 constexpr std::uint8_t kNeeded = 1;  // the walk reads this vertex: Update_Function evaluates it
-constexpr std::uint8_t kVisited = 2;
-constexpr std::uint8_t kHaveClosePoint = 4;
+constexpr std::uint8_t kDefined = 2;
+constexpr std::uint8_t kPositive = 4;  // F >= 0 (a zero counts as positive)
+constexpr std::uint8_t kHaveClosePoint = 8;
 
-bool is_positive(double value) { return value >= 0.0; }
+// The walk around a point in cell I covers the edges between the vertices
+// [I - 1, I + 2]^D: the 3^D cells centred on I.
+constexpr std::int64_t kWalkLow = -1;
+constexpr std::int64_t kWalkHigh = 2;
+
+template <int D>
+std::uint8_t sign_flags(const Evaluation<D>& e) {
+  if (!e.defined) return 0;
+  return e.value >= 0.0 ? kDefined | kPositive : kDefined;
+}
 
 }  // namespace
 
@@ -34,15 +48,13 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   field_.clear();
   flags_.clear();
   stats_ = ResampleStats{};
-  // The walk reads the corners [I-1, I+3)^D and the far ends of their edges:
-  // the box [I-1, I+3]^D less the vertices with two or more coordinates at I+3.
   for (const Vec<D>& p : surface.points().positions) {
-    const IVec<D> lo = grid.cell_of(p).array() - 1;
-    const IVec<D> hi = lo.array() + 4;
+    const IVec<D> cell = grid.cell_of(p);
+    const IVec<D> lo = cell.array() + kWalkLow;
+    const IVec<D> hi = cell.array() + kWalkHigh;
     const auto block = field_.block(lo);
     flags_.resize(field_.slots(), 0);
     for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
-      if ((v.array() == hi.array()).count() > 1) return;
       const std::uint32_t slot = block.slot(v);
       if (flags_[slot] & kNeeded) return;
       flags_[slot] |= kNeeded;
@@ -88,12 +100,14 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
         surface.select(brick_ids, cube_centre, cube_reach, neighbourhood);
         for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& offset) {
           const std::uint32_t s = VertexField<D>::slot_in_brick(first, offset);
-          if (flags_[s] & kNeeded) values_[s] = surface.evaluate_in(neighbourhood, grid.vertex_position(brick_origin + offset));
+          if (!(flags_[s] & kNeeded)) return;
+          values_[s] = surface.evaluate_in(neighbourhood, grid.vertex_position(brick_origin + offset));
+          flags_[s] |= sign_flags(values_[s]);
         });
       });
     }
   });
-  for (std::size_t s = 0; s < flags_.size(); ++s) stats_.undefined_vertices += (flags_[s] & kNeeded) && !values_[s].defined;
+  for (const std::uint8_t f : flags_) stats_.undefined_vertices += (f & kNeeded) && !(f & kDefined);
   function_updated_ = true;
 }
 
@@ -104,29 +118,39 @@ const Evaluation<D>* Resampler<D>::vertex_value(const IVec<D>& vertex) const {
 }
 
 template <int D>
-void Resampler<D>::list_crossings(const AmlsSurface<D>& surface) {
-  const Grid<D>& grid = surface.grid();
-  for (auto& f : flags_) f &= kNeeded;
+void Resampler<D>::list_crossings(ThreadPool& pool) {
+  constexpr std::int64_t side = VertexField<D>::kBrickSide;
+  const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
+  std::vector<std::vector<Crossing>> found(static_cast<std::size_t>(pool.threads()));
+  pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int block) {
+    std::vector<Crossing>& out = found[static_cast<std::size_t>(block)];
+    for (std::size_t b = begin; b < end; ++b) {
+      const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
+      const IVec<D> origin = field_.vertex_of(first);
+      // The bricks across the upper faces, where the last layer's edges end.
+      std::array<std::optional<std::uint32_t>, D> upper;
+      for (int axis = 0; axis < D; ++axis) upper[axis] = field_.find(origin + side * IVec<D>::Unit(axis));
+      for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Constant(side - 1), [&](const IVec<D>& offset) {
+        const std::uint32_t from = VertexField<D>::slot_in_brick(first, offset);
+        const std::uint8_t f0 = flags_[from];
+        if (!(f0 & kDefined)) return;
+        for (int axis = 0; axis < D; ++axis) {
+          IVec<D> next = offset;
+          std::uint32_t to_first = first;
+          if (++next[axis] == side) {
+            if (!upper[axis]) continue;
+            next[axis] = 0;
+            to_first = *upper[axis];
+          }
+          const std::uint32_t to = VertexField<D>::slot_in_brick(to_first, next);
+          const std::uint8_t f1 = flags_[to];
+          if ((f1 & kDefined) && ((f0 ^ f1) & kPositive)) out.push_back({from, to, axis});
+        }
+      });
+    }
+  });
   crossings_.clear();
-  for (const Vec<D>& p : surface.points().positions) {
-    const IVec<D> lo = grid.cell_of(p).array() - 1;
-    const IVec<D> hi = lo.array() + 3;
-    const auto block = field_.block(lo);
-    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& corner) {
-      const std::uint32_t from = block.slot(corner);
-      if (flags_[from] & kVisited) return;
-      flags_[from] |= kVisited;
-      const Evaluation<D>& f0 = values_[from];
-      if (!f0.defined) return;
-      for (int axis = 0; axis < D; ++axis) {
-        IVec<D> end = corner;
-        ++end[axis];
-        const std::uint32_t to = block.slot(end);
-        const Evaluation<D>& f1 = values_[to];
-        if (f1.defined && is_positive(f0.value) != is_positive(f1.value)) crossings_.push_back({from, to, axis});
-      }
-    });
-  }
+  for (const std::vector<Crossing>& part : found) crossings_.insert(crossings_.end(), part.begin(), part.end());
   stats_.crossings = crossings_.size();
 }
 
@@ -175,7 +199,7 @@ template <int D>
 PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool) {
   if (!function_updated_) throw std::logic_error("Resampler::resample() called before update_function()");
   function_updated_ = false;
-  list_crossings(surface);
+  list_crossings(pool);
   locate_crossings(surface, variant, pool);
 
   const Grid<D>& grid = surface.grid();

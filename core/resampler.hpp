@@ -2,19 +2,24 @@
 // Marching-cubes-like point creation (paper, section 3.2): the new points are
 // the crossings of S(P) with the grid edges near the old points.
 //
-// Update_Function() evaluates F once at every grid vertex the walk will read.
-// Resample() then visits, for each point p in order, the corners of the block
-// [H(p) - 1, H(p) + 3)^D; a corner not yet VISITED has its D edges towards +x,
-// +y (+z) checked for a sign change (a value of exactly 0 counts as positive,
-// so a surface through a vertex gives one crossing per edge leaving it towards
-// negative values, all at that vertex, and HAVECLOSEPOINT keeps one). A crossing
-// becomes a new point only if the edge end nearer to it is not yet
-// HAVECLOSEPOINT; that end then becomes HAVECLOSEPOINT.
+// Update_Function() evaluates F once at every vertex of the block
+// [H(p) - 1, H(p) + 2]^D of every point p: the 3^D cells centred on p's cell,
+// as in the paper's Fig. 1(b) (12 vertices in 2D there; we keep the block's
+// corners too). Resample() then lists every edge between two such vertices
+// whose values are defined and of opposite signs (a value of exactly 0 counts
+// as positive, so a surface through a vertex gives one crossing per edge leaving
+// it towards negative values, all at that vertex, and HAVECLOSEPOINT keeps one),
+// locates the crossings, and settles them in listing order: a crossing becomes
+// a new point only if the edge end nearer to it is not yet HAVECLOSEPOINT; that
+// end then becomes HAVECLOSEPOINT.
 //
-// The decisions depend only on the walk order and the crossings' positions, so
-// the crossings are first listed in walk order, then located in parallel, then
-// settled in order: the result is the sequential algorithm's, for any thread
-// count.
+// Where the paper visits, point by point, the L-shaped edges of each point's
+// block and marks vertices VISITED so that no edge is examined twice, we list
+// the edges brick by brick (core/vertex_field.hpp; bricks are created in the
+// points' order), each edge exactly once by construction. The edges are the
+// union of the points' blocks plus the few that join two blocks; the order is
+// fixed, so the settling - the only order-dependent part - gives the same points
+// for any thread count, while the listing and the locating run in parallel.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -67,7 +72,7 @@ class Resampler {
     Vec<D> normal = Vec<D>::Zero();
   };
 
-  void list_crossings(const AmlsSurface<D>& surface);
+  void list_crossings(ThreadPool& pool);
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
   // The points gathered around one brick: brick_points_[block][begin, end).

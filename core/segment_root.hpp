@@ -1,12 +1,14 @@
 #pragma once
 // The zero of F on a short segment whose ends have opposite signs, located by
-// Illinois regula falsi (core/root_finding.hpp) to near machine precision, with
+// a safeguarded secant iteration (core/root_finding.hpp) started from a cubic
+// Hermite guess, to near machine precision, with
 // the unit normal a new point gets there: the fitted sphere's gradient at the
 // root when the root's own evaluation gave it, else the gradients of the ends
 // interpolated. Where F turns undefined inside the segment, the zero of the
 // linear interpolant of the end values is taken instead (a fallback). Used by
 // the grid walk (on grid edges) and by the ray tracer (between ray samples).
 #include <cmath>
+#include <limits>
 
 #include "core/gradient_fit.hpp"
 #include "core/root_finding.hpp"
@@ -47,6 +49,25 @@ SegmentRoot<D> interpolate_segment_root(const Evaluation<D>& f0, const Evaluatio
   return out;
 }
 
+// The zero in (0, 1) of the cubic Hermite interpolant of values v0, v1 and
+// slopes s0, s1 at t = 0 and 1, by Newton's method from `t` (the linear
+// interpolant's zero); NaN if Newton leaves the segment. The slopes come from
+// the fitted spheres' gradients, which near a smooth surface are close to F's
+// own, so the guess is typically far closer than the linear one.
+inline double hermite_root_guess(double v0, double v1, double s0, double s1, double t) {
+  for (int k = 0; k < 8; ++k) {
+    const double t2 = t * t;
+    const double t3 = t2 * t;
+    const double value = (2 * t3 - 3 * t2 + 1) * v0 + (t3 - 2 * t2 + t) * s0 + (3 * t2 - 2 * t3) * v1 + (t3 - t2) * s1;
+    const double slope = (6 * t2 - 6 * t) * (v0 - v1) + (3 * t2 - 4 * t + 1) * s0 + (3 * t2 - 2 * t) * s1;
+    const double step = value / slope;
+    t -= step;
+    if (!(t > 0.0 && t < 1.0)) return std::numeric_limits<double>::quiet_NaN();
+    if (std::abs(step) <= 1e-12) break;
+  }
+  return t;
+}
+
 // `evaluate(y)` returns F's Evaluation<D> at y. f0 and f1 are F at `start` and
 // `start + step`, defined and of opposite signs (a zero counts as positive).
 template <int D, typename Evaluate>
@@ -56,18 +77,21 @@ SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, con
   // The evaluation with the smallest |F| so far: the root's, at the end.
   double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
   Evaluation<D> best = best_t == 0.0 ? f0 : f1;
-  const RootResult root = find_root_illinois(
-      [&](double t) -> std::optional<double> {
+  RootOptions options;
+  options.tolerance = kSegmentRootTolerance;
+  options.value_tolerance = kSegmentRootTolerance * (std::abs(f0.value) + std::abs(f1.value));
+  options.first_guess = hermite_root_guess(f0.value, f1.value, f0.gradient.dot(step), f1.gradient.dot(step), out.t);
+  const RootResult root = find_root(
+      [&](double t) -> std::optional<RootSample> {
         const Evaluation<D> e = evaluate(Vec<D>(start + t * step));
         if (!e.defined) return std::nullopt;
         if (std::abs(e.value) < std::abs(best.value)) {
           best = e;
           best_t = t;
         }
-        return e.value;
+        return RootSample{e.value, e.gradient.dot(step)};
       },
-      0.0, 1.0, f0.value, f1.value, kSegmentRootTolerance,
-      kSegmentRootTolerance * (std::abs(f0.value) + std::abs(f1.value)));
+      0.0, 1.0, f0.value, f1.value, options);
   out.evaluations = root.evaluations;
   if (!root.ok) {
     out.fallback = true;

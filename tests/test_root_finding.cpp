@@ -3,27 +3,69 @@
 #include <cmath>
 
 #include "core/root_finding.hpp"
+#include "core/segment_root.hpp"
 
 using namespace amls;
 
-TEST_CASE("Illinois finds a bracketed root to the requested tolerance") {
-  auto g = [](double t) -> std::optional<double> { return t * t * t - 0.2; };
-  const RootResult r = find_root_illinois(g, 0.0, 1.0, -0.2, 0.8, 1e-13);
+namespace {
+
+RootOptions tolerance(double t) {
+  RootOptions options;
+  options.tolerance = t;
+  return options;
+}
+
+}  // namespace
+
+TEST_CASE("find_root finds a bracketed root to the requested tolerance without slopes") {
+  auto g = [](double t) -> std::optional<RootSample> { return RootSample{t * t * t - 0.2}; };
+  const RootResult r = find_root(g, 0.0, 1.0, -0.2, 0.8, tolerance(1e-13));
   REQUIRE(r.ok);
   CHECK(r.t == doctest::Approx(std::cbrt(0.2)).epsilon(1e-12));
   CHECK(r.evaluations < 20);
 }
 
-TEST_CASE("Illinois returns an end whose value is exactly zero") {
-  auto g = [](double) -> std::optional<double> { return 1.0; };
-  CHECK(find_root_illinois(g, 0.0, 1.0, 0.0, -1.0, 1e-12).t == 0.0);
-  CHECK(find_root_illinois(g, 0.0, 1.0, -1.0, 0.0, 1e-12).t == 1.0);
+TEST_CASE("find_root converges in a few steps from a good guess with slopes") {
+  const double root = std::cbrt(0.2);
+  auto g = [](double t) -> std::optional<RootSample> { return RootSample{t * t * t - 0.2, 3.0 * t * t}; };
+  RootOptions options = tolerance(1e-13);
+  options.first_guess = root + 1e-3;
+  const RootResult r = find_root(g, 0.0, 1.0, -0.2, 0.8, options);
+  REQUIRE(r.ok);
+  CHECK(r.t == doctest::Approx(root).epsilon(1e-12));
+  CHECK(r.evaluations <= 5);
 }
 
-TEST_CASE("Illinois reports failure where the function is undefined") {
-  auto g = [](double t) -> std::optional<double> {
+TEST_CASE("find_root still converges where the secant steps are poor") {
+  // Nearly a step function: secants through samples on the flat parts shoot
+  // far off, so the bracket safeguards must do the work.
+  auto g = [](double t) -> std::optional<RootSample> { return RootSample{std::tanh(200.0 * (t - 0.3141))}; };
+  const RootResult r = find_root(g, 0.0, 1.0, std::tanh(-200.0 * 0.3141), std::tanh(200.0 * 0.6859), tolerance(1e-12));
+  REQUIRE(r.ok);
+  CHECK(r.t == doctest::Approx(0.3141).epsilon(1e-10));
+  CHECK(r.evaluations < 100);
+}
+
+TEST_CASE("find_root returns an end whose value is exactly zero") {
+  auto g = [](double) -> std::optional<RootSample> { return RootSample{1.0}; };
+  CHECK(find_root(g, 0.0, 1.0, 0.0, -1.0, tolerance(1e-12)).t == 0.0);
+  CHECK(find_root(g, 0.0, 1.0, -1.0, 0.0, tolerance(1e-12)).t == 1.0);
+}
+
+TEST_CASE("find_root reports failure where the function is undefined") {
+  auto g = [](double t) -> std::optional<RootSample> {
     if (t > 0.3 && t < 0.7) return std::nullopt;
-    return t - 0.5;
+    return RootSample{t - 0.5};
   };
-  CHECK_FALSE(find_root_illinois(g, 0.0, 1.0, -0.5, 0.5, 1e-12).ok);
+  CHECK_FALSE(find_root(g, 0.0, 1.0, -0.5, 0.5, tolerance(1e-12)).ok);
+}
+
+TEST_CASE("the Hermite guess recovers a cubic's root exactly and falls back outside the segment") {
+  // p(t) = (t - 0.3)(t + 1)(t + 2): values and slopes at 0 and 1.
+  auto p = [](double t) { return (t - 0.3) * (t + 1.0) * (t + 2.0); };
+  auto dp = [](double t) { return (t + 1.0) * (t + 2.0) + (t - 0.3) * (2.0 * t + 3.0); };
+  const double linear = p(0.0) / (p(0.0) - p(1.0));
+  CHECK(hermite_root_guess(p(0.0), p(1.0), dp(0.0), dp(1.0), linear) == doctest::Approx(0.3).epsilon(1e-10));
+  // Slopes that contradict the values send Newton off the segment: no guess.
+  CHECK(std::isnan(hermite_root_guess(-1.0, 1.0, -20.0, -20.0, 0.1)));
 }
