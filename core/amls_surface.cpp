@@ -158,11 +158,14 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
   }
   const double inverse_r2 = 1.0 / r2;
   GradientFit<D> fit;
+  // Branch-free: a neighbour beyond Delta or filtered out adds with weight 0.
   for (std::size_t k = 0; k < n; ++k) {
     const Vec<D> d = neighbourhood.positions[k] - y;
-    const double w = weight_of_squared_ratio(d.squaredNorm() * inverse_r2);
-    if (w <= 0.0 || (filter && neighbourhood.normals[k].dot(reference) <= 0.0)) continue;
-    fit.add(d, neighbourhood.normals[k], w);
+    const double dd = d.squaredNorm();
+    const double a = std::max(0.0, 1.0 - dd * inverse_r2);
+    const double a2 = a * a;
+    const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
+    fit.add(d, dd, neighbourhood.normals[k], agrees ? a2 * a2 : 0.0);
   }
   return fit.solve(parameters_.min_weight);
 }

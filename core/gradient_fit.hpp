@@ -28,13 +28,16 @@ struct Evaluation {
 template <int D>
 class GradientFit {
  public:
-  // d: neighbour position minus x; normal: its pseudo-normal; w: its weight.
-  void add(const Vec<D>& d, const Vec<D>& normal, double w) {
+  // d: neighbour position minus x; normal: its pseudo-normal; w: its weight
+  // (zero adds nothing, so callers can stay free of branches).
+  void add(const Vec<D>& d, const Vec<D>& normal, double w) { add(d, d.squaredNorm(), normal, w); }
+  // The same with |d|^2 the caller has already computed.
+  void add(const Vec<D>& d, double squared_norm, const Vec<D>& normal, double w) {
     sum_w_ += w;
     sum_d_ += w * d;
     sum_n_ += w * normal;
     sum_dn_ += w * d.dot(normal);
-    sum_dd_ += w * d.squaredNorm();
+    sum_dd_ += w * squared_norm;
   }
 
   double total_weight() const { return sum_w_; }
