@@ -8,7 +8,8 @@ itself (-displayfd: no race with other X servers on the machine, which
 `xvfb-run -a` has); without Xvfb it uses $DISPLAY, e.g. under
 `xvfb-run -a -s "-screen 0 1280x800x24" python3 tests/editor_gui_test.py ...`.
 
-Checks, on a 2D scene (the unit circle): Shift+click on the curve adds handles,
+Checks, on a 2D scene (the unit circle): the editor starts with the handle of
+the scene's first stage, Shift+click on the curve adds another,
 a drag deforms the surface the way it says (Ctrl+S exports the result), the
 interpolated variant (key I) changes the next export, F12 writes a screenshot
 whose pixels show the surface and the handles; Esc and undo restore the
@@ -219,19 +220,20 @@ def export(editor, path, nth):
 def test_2d(binary, folder):
     scene = os.path.join(folder, "circle.json")
     with open(scene, "w") as f:
+        # The scene's first stage puts a handle at the bottom: the editor starts with it.
         f.write('{"dimension": 2, "name": "circle", "shape": {"type": "circle", "radius": 1, "points": 250},'
-                ' "grid": {"spacing": 0.024}, "stages": []}')
+                ' "grid": {"spacing": 0.024}, "stages": [{"handles": [[0, -1]],'
+                ' "targets": [{"steps": 1, "handles": [[0, -1.2]]}]}]}')
     out, shot = os.path.join(folder, "out.ply"), os.path.join(folder, "shot.png")
     editor = Editor(binary, folder, "editor2d", [scene, "--export", out, "--screenshot", shot])
     editor.wait_line(r"snapshot .* load=1 dimension=2 points=250", what="the 2D scene to load")
     editor.wait_idle()
 
-    # Two handles (the left half of the circle is under the side panel): the bottom stays,
-    # the right end is dragged half a unit to the right.
-    shift_click(editor, editor.to_window(0.0, -1.0))
-    editor.wait_line(r" frame \d+ .*handles=1 ", what="the first handle")
+    # Two handles (the left half of the circle is under the side panel): the scene's at the bottom stays,
+    # a Shift+click adds one at the right end, which is dragged half a unit to the right.
+    editor.wait_line(r" frame \d+ .*handles=1 ", what="the scene's handle")
     shift_click(editor, editor.to_window(1.0, 0.0))
-    editor.wait_line(r" frame \d+ .*handles=2 ", what="the second handle")
+    editor.wait_line(r" frame \d+ .*handles=2 ", what="the added handle")
     start, end = editor.to_window(1.0, 0.0), editor.to_window(1.5, 0.0)
     drag(editor, start, end)
     points = export(editor, out, 0)
@@ -292,7 +294,8 @@ def test_frames_during_heavy_step(binary, folder):
     scene = os.path.join(folder, "sphere.json")
     with open(scene, "w") as f:
         f.write('{"dimension": 3, "name": "sphere", "shape": {"type": "sphere", "radius": 1, "points": 100000},'
-                ' "grid": {"spacing": 0.009}, "stages": []}')
+                ' "grid": {"spacing": 0.009}, "stages": [{"handles": [[0, 0, 1]],'
+                ' "targets": [{"steps": 1, "handles": [[0, 0, 1.1]]}]}]}')
     # A small window: llvmpipe draws the 100 000 splats in software, on the cores the worker uses too.
     editor = Editor(binary, folder, "editor3d", [scene], size="640x480")
     editor.wait_line(r"snapshot .* load=1 dimension=3", what="the 3D scene to load")

@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "app/editor/directory_listing.hpp"
-#include "editor_test_support.hpp"
+#include "temp_dir.hpp"
 
 using namespace amls::editor;
 

@@ -14,6 +14,7 @@
 using namespace amls;
 using namespace amls::editor;
 using namespace std::chrono_literals;
+using amls::test::write_text;
 
 namespace {
 
@@ -139,23 +140,6 @@ TEST_CASE("the worker shuts down cleanly while a step runs") {
   CHECK(std::chrono::steady_clock::now() - begin < kPatience);
 }
 
-TEST_CASE("a file that cannot be loaded is reported and the current surface stays") {
-  amls::test::TempDir dir;
-  const std::string bad = dir.file("bad.ply");
-  std::ofstream(bad) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n";
-  EditorWorker worker;
-  worker.post(circle());
-  REQUIRE(worker.wait_until_idle(kPatience));
-  const auto before = worker.snapshot();
-  worker.take_messages();
-  worker.post(command::LoadFile{bad});
-  REQUIRE(worker.wait_until_idle(kPatience));
-  const auto after = worker.snapshot();
-  CHECK(after->load_id == before->load_id);
-  CHECK(after->points.positions == before->points.positions);
-  CHECK(has_message(worker.take_messages(), Message::Level::error, "bad.ply"));
-}
-
 TEST_CASE("export writes the current point set; a failed export leaves the previous file intact") {
   amls::test::TempDir dir;
   const std::string out = dir.file("out.ply");
@@ -200,14 +184,74 @@ TEST_CASE("Save Scene writes the session's steps as a scene whose start reads ba
   worker.post(command::SaveScene{path});
   REQUIRE(worker.wait_until_idle(kPatience));
   CHECK(has_message(worker.take_messages(), Message::Level::info, "Saved the scene"));
-  std::ifstream in(path);
-  const nlohmann::json scene = nlohmann::json::parse(in);
-  CHECK(scene["stages"].size() == 1);
-  CHECK(scene["stages"][0]["targets"].size() == steps);
-  const InitialShape start = load_scene_start(path);
+  const Scene<2> scene = std::get<Scene<2>>(read_scene(path));
+  REQUIRE(scene.history.stages.size() == 1);
+  CHECK(scene.history.stages[0].targets.size() == steps);
+  const InitialShape start = load_scene_start(path, 1);
   CHECK(start.points.size() == 250);
   CHECK(start.settings.spacing == 0.024);
   CHECK(start.handles.at(0).x() == 1.0);
+}
+
+TEST_CASE("a torus or a rounded box loaded from a scene is saved back as the same shape, not as points") {
+  amls::test::TempDir dir;
+  const std::pair<const char*, const char*> shapes[] = {
+      {"torus", R"({"type": "torus", "center": [0, 0, 0.25], "major_radius": 1, "minor_radius": 0.35})"},
+      {"box", R"({"type": "rounded_box", "half_extents": [1, 0.6, 0.5], "radius": 0.3, "spacing": 0.09})"},
+  };
+  for (const auto& [name, shape] : shapes) {
+    CAPTURE(name);
+    const std::string loaded = dir.file(std::string(name) + ".json");
+    const std::string saved = dir.file(std::string(name) + "-session.json");
+    write_text(loaded, std::string(R"({"dimension": 3, "shape": )") + shape +
+                           R"(, "grid": {"cells": 10}, "stages": [{"handles": [[1.3, 0, 0.25]],
+                           "targets": [{"steps": 4, "handles": [[1.6, 0, 0.25]]}]}]})");
+    EditorWorker worker;
+    worker.post(command::LoadFile{loaded});
+    drag(worker, {Vec<3>(1.3, 0, 0.25)}, 0, 0.2, 2);
+    worker.post(command::SaveScene{saved});
+    REQUIRE(worker.wait_until_idle(kPatience));
+    CHECK(has_message(worker.take_messages(), Message::Level::info, "Saved the scene"));
+    const Scene<3> before = std::get<Scene<3>>(read_scene(loaded));
+    const Scene<3> after = std::get<Scene<3>>(read_scene(saved));
+    CHECK(to_json(after)["shape"] == to_json(before)["shape"]);
+    CHECK(after.h() == before.h());
+    CHECK(after.history.total_steps() == worker.snapshot()->steps);
+  }
+}
+
+TEST_CASE("a file or scene that cannot be loaded shows the reader's message and the current surface stays") {
+  amls::test::TempDir dir;
+  auto scene = [](const std::string& shape) {
+    return R"({"dimension": 2, "shape": )" + shape +
+           R"(, "grid": {"spacing": 0.05}, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[2, 0]]}]}]})";
+  };
+  struct Bad {
+    std::string file, text, reason;
+  };
+  const Bad cases[] = {
+      {"bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n", ": "},
+      {"key.json", scene(R"({"type": "circle", "radius": 1, "colour": "red"})"), ": shape.colour: unknown key"},
+      {"type.json", scene(R"({"type": "circle", "radius": [1]})"), ": shape.radius: expected a number, got an array"},
+      {"file.json", scene(R"({"type": "file", "path": "nowhere.xyz"})"), ": shape.path: no such file"},
+  };
+  EditorWorker worker;
+  worker.post(circle());
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto before = worker.snapshot();
+  for (const Bad& bad : cases) {
+    CAPTURE(bad.file);
+    const std::string path = dir.file(bad.file);
+    write_text(path, bad.text);
+    worker.take_messages();
+    worker.post(command::LoadFile{path});
+    REQUIRE(worker.wait_until_idle(kPatience));
+    const auto after = worker.snapshot();
+    CHECK(after->load_id == before->load_id);
+    CHECK(after->points.positions == before->points.positions);
+    // The status line shows the reader's message, which names the file (once) and the key.
+    CHECK(has_message(worker.take_messages(), Message::Level::error, "Cannot open " + path + bad.reason));
+  }
 }
 
 TEST_CASE("undo and redo through the worker restore the drag's start and end") {

@@ -1,30 +1,57 @@
 #include <doctest/doctest.h>
 
-#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
 #include "core/point_set_io.hpp"
+#include "core/scene_run.hpp"
 #include "core/shapes.hpp"
 #include "editor_test_support.hpp"
 
 using namespace amls;
 using namespace amls::editor;
+using amls::test::write_text;
 
 namespace {
 
-void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+// A scene with the given dimension and shape object, h = 0.05 and one stage of one handle.
+std::string scene_text(int dimension, const std::string& shape) {
+  const std::string handle = dimension == 2 ? "[1, 0]" : "[1, 0, 0]";
+  const std::string target = dimension == 2 ? "[1.2, 0]" : "[1.2, 0, 0]";
+  return "{\"dimension\": " + std::to_string(dimension) + ", \"shape\": " + shape +
+         ", \"grid\": {\"spacing\": 0.05}, \"stages\": [{\"handles\": [" + handle +
+         "], \"targets\": [{\"steps\": 1, \"handles\": [" + target + "]}]}]}";
+}
+
+// The start has the scene's shape as its source and the points the core samples from it.
+template <int D>
+void check_start(const InitialShape& start, const Scene<D>& scene) {
+  REQUIRE(std::holds_alternative<SceneShape<D>>(start.source));
+  Scene<D> as_started = scene;
+  as_started.shape = std::get<SceneShape<D>>(start.source);
+  CHECK(to_json(as_started)["shape"] == to_json(scene)["shape"]);
+  CHECK(as_started.shape.resolved_file == scene.shape.resolved_file);
+  const PointSet<D> expected = sample_scene_shape(scene, 0.0).points;
+  REQUIRE(start.points.size() == expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    CHECK(start.points.positions[i].template head<D>() == expected.positions[i]);
+}
 
 }  // namespace
 
 TEST_CASE("built-in shapes: the paper's circle and a sphere, with their scene sources") {
   const InitialShape circle = default_shape(2);
-  CHECK(circle.dimension == 2);
+  CHECK(circle.dimension() == 2);
   CHECK(circle.points.size() == 250);
-  CHECK(circle.source.type == ShapeSource::Type::circle);
+  CHECK(circle.name == "circle of 250 points");
+  REQUIRE(std::holds_alternative<SceneShape<2>>(circle.source));
+  CHECK(std::get<SceneShape<2>>(circle.source).type == ShapeType::circle);
+  CHECK(std::get<SceneShape<2>>(circle.source).points == 250);
   CHECK(circle.settings.spacing == 0.024);
   const InitialShape sphere = make_sphere(2.0, 500, 0.1);
-  CHECK(sphere.dimension == 3);
+  CHECK(sphere.dimension() == 3);
+  CHECK(std::get<SceneShape<3>>(sphere.source).type == ShapeType::sphere);
   CHECK(sphere.points.positions[7].norm() == doctest::Approx(2.0));
   CHECK_THROWS_AS(make_circle(1.0, 2, 0.1), std::invalid_argument);
   CHECK_THROWS_AS(make_circle(-1.0, 20, 0.1), std::invalid_argument);
@@ -34,34 +61,36 @@ TEST_CASE("a point-set file opens with h set to its median spacing") {
   amls::test::TempDir dir;
   const std::string path = dir.file("circle.ply");
   write_point_set(path, sample_circle(Vec<2>(0.5, 0.5), 0.25, 200), PointFileFormat::ply_binary_little_endian);
-  const InitialShape shape = load_initial_shape(path);
-  CHECK(shape.dimension == 2);
+  const InitialShape shape = load_initial_shape(path, 1);
+  CHECK(shape.dimension() == 2);
   CHECK(shape.points.size() == 200);
-  CHECK(shape.source.type == ShapeSource::Type::file);
+  const SceneShape<2>& source = std::get<SceneShape<2>>(shape.source);
+  CHECK(source.type == ShapeType::file);
+  CHECK(source.resolved_file == path);
   CHECK(shape.settings.spacing == doctest::Approx(2.0 * 3.14159265 * 0.25 / 200).epsilon(0.01));
 }
 
 TEST_CASE("a point-set file without normals, empty or missing is refused with its name") {
   amls::test::TempDir dir;
   const std::string bare = dir.file("bare.xyz");
-  write(bare, "0 0 0\n1 0 0\n0 1 0\n");
-  CHECK_THROWS_WITH_AS(load_initial_shape(bare), doctest::Contains("no normals"), std::runtime_error);
-  CHECK_THROWS_WITH_AS(load_initial_shape(dir.file("missing.ply")), doctest::Contains("missing.ply"),
+  write_text(bare, "0 0 0\n1 0 0\n0 1 0\n");
+  CHECK_THROWS_WITH_AS(load_initial_shape(bare, 1), doctest::Contains("no normals"), std::runtime_error);
+  CHECK_THROWS_WITH_AS(load_initial_shape(dir.file("missing.ply"), 1), doctest::Contains("missing.ply"),
                        std::runtime_error);
 }
 
 TEST_CASE("a scene's start: shape, grid, parameters and the first stage's handles") {
   amls::test::TempDir dir;
   const std::string path = dir.file("s.json");
-  write(path, R"({"dimension": 2, "name": "clover", "shape": {"type": "circle", "center": [0.5, 0], "radius": 2,
+  write_text(path, R"({"dimension": 2, "name": "clover", "shape": {"type": "circle", "center": [0.5, 0], "radius": 2,
     "points": 100}, "grid": {"cells": 40}, "radius_factor": 2.5, "variant": "interpolated",
     "deformation": {"kind": "affine", "alpha": 2}, "stages": [{"handles": [[2.5, 0], [0.5, 2]],
     "targets": [{"steps": 3, "handles": [[3, 0], [0.5, 2]]}]}]})");
-  const InitialShape shape = load_initial_shape(path);
+  const InitialShape shape = load_initial_shape(path, 1);
   CHECK(shape.name == "clover");
   CHECK(shape.points.size() == 100);
   CHECK(shape.points.positions[0].x() == doctest::Approx(2.5));
-  CHECK(shape.source.center.x() == 0.5);
+  CHECK(std::get<SceneShape<2>>(shape.source).center.x() == 0.5);
   CHECK(shape.settings.spacing == 1.0 / 40);
   CHECK(shape.settings.radius_factor == 2.5);
   CHECK(shape.settings.variant == Variant::interpolated);
@@ -71,26 +100,46 @@ TEST_CASE("a scene's start: shape, grid, parameters and the first stage's handle
   CHECK(shape.handles[1].y() == 2.0);
 }
 
-TEST_CASE("a scene's file shape is found relative to the scene") {
+TEST_CASE("every shape type of a scene starts from the points amls deform starts from, its source as written") {
   amls::test::TempDir dir;
   write_point_set(dir.file("ring.xyz"), sample_circle(Vec<2>::Zero(), 1.0, 100), PointFileFormat::xyz);
-  write(dir.file("s.json"),
-        R"({"dimension": 2, "shape": {"type": "file", "path": "ring.xyz"}, "grid": {"spacing": 0.05}, "stages": []})");
-  const InitialShape shape = load_initial_shape(dir.file("s.json"));
-  CHECK(shape.points.size() == 100);
-  CHECK(shape.settings.spacing == 0.05);
-  CHECK(shape.source.type == ShapeSource::Type::file);
+  const std::pair<int, std::string> shapes[] = {
+      {2, R"({"type": "circle", "radius": 1})"},
+      {2, R"({"type": "ellipse", "center": [0.1, 0], "semi_axes": [1, 0.5]})"},
+      {2, R"({"type": "rounded_box", "half_extents": [1, 0.5], "radius": 0.2, "spacing": 0.04})"},
+      {2, R"({"type": "file", "path": "ring.xyz"})"},
+      {3, R"({"type": "sphere", "radius": 1, "points": 400})"},
+      {3, R"({"type": "torus", "major_radius": 1, "minor_radius": 0.3})"},
+      {3, R"({"type": "rounded_box", "half_extents": [1, 0.5, 0.5], "radius": 0.25})"},
+  };
+  for (const auto& [dimension, shape] : shapes) {
+    CAPTURE(shape);
+    const std::string path = dir.file("s.json");
+    write_text(path, scene_text(dimension, shape));
+    const InitialShape start = load_initial_shape(path, 1);
+    CHECK(start.dimension() == dimension);
+    CHECK(start.name == "s.json");
+    CHECK(start.settings.spacing == 0.05);
+    CHECK(start.handles.size() == 1);
+    std::visit([&](const auto& scene) { check_start(start, scene); }, read_scene(path));
+  }
 }
 
-TEST_CASE("scene errors name the file and the key") {
+TEST_CASE("scenes the core reader refuses: its message names the file and the key") {
   amls::test::TempDir dir;
   const std::string path = dir.file("bad.json");
-  write(path, R"({"dimension": 2, "shape": {"type": "circle"}, "grid": {"cells": 10, "spacing": 0.1}})");
-  CHECK_THROWS_WITH_AS(load_scene_start(path), doctest::Contains("bad.json: grid"), std::runtime_error);
-  write(path, R"({"dimension": 3, "shape": {"type": "circle"}, "grid": {"cells": 10}})");
-  CHECK_THROWS_WITH_AS(load_scene_start(path), doctest::Contains("shape.type"), std::runtime_error);
-  write(path, R"({"dimension": 3, "shape": {"type": "torus"}, "grid": {"cells": 10}})");
-  CHECK_THROWS_WITH_AS(load_scene_start(path), doctest::Contains("torus"), std::runtime_error);
-  write(path, "{ not json");
-  CHECK_THROWS_WITH_AS(load_scene_start(path), doctest::Contains("not valid JSON"), std::runtime_error);
+  const std::pair<std::string, std::string> cases[] = {
+      {scene_text(2, R"({"type": "circle", "radius": 1, "colour": "red"})"), "bad.json: shape.colour: unknown key"},
+      {scene_text(2, R"({"type": "circle", "radius": "one"})"), "bad.json: shape.radius: expected a number"},
+      {scene_text(3, R"({"type": "file", "path": "gone.ply"})"), "bad.json: shape.path: no such file"},
+      {scene_text(3, R"({"type": "circle"})"), "shape.type: a circle is a 2D shape"},
+      {R"({"dimension": 2, "shape": {"type": "circle"}, "grid": {"spacing": 0.1}, "stages": []})",
+       "stages: the history has no stage"},
+      {"{ not json", "bad.json: not valid JSON"},
+  };
+  for (const auto& [text, message] : cases) {
+    CAPTURE(text);
+    write_text(path, text);
+    CHECK_THROWS_WITH_AS(load_initial_shape(path, 1), doctest::Contains(message.c_str()), std::runtime_error);
+  }
 }

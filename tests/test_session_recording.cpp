@@ -1,7 +1,5 @@
 #include <doctest/doctest.h>
 
-#include <nlohmann/json.hpp>
-
 #include "app/editor/session_recording.hpp"
 
 using namespace amls;
@@ -11,9 +9,9 @@ namespace {
 
 using Handles = std::vector<Vec<2>>;
 
-ShapeSource circle_source() {
-  ShapeSource s;
-  s.type = ShapeSource::Type::circle;
+SceneShape<2> circle_source() {
+  SceneShape<2> s;
+  s.type = ShapeType::circle;
   s.radius = 1.0;
   s.points = 250;
   return s;
@@ -37,12 +35,16 @@ TEST_CASE("steps that continue each other share a stage; a changed handle set st
   editor_step(r, a, b, s, true);
   editor_step(r, b, c, s, false);
   editor_step(r, c2, d2, s, false);  // a handle was added
-  const auto stages = r.stages();
+  const auto stages = r.history().stages;
   REQUIRE(stages.size() == 2);
   CHECK(stages[0].start == a);
-  CHECK(stages[0].targets == std::vector<Handles>{b, c});
+  REQUIRE(stages[0].targets.size() == 2);
+  CHECK(stages[0].targets[0].handles == b);
+  CHECK(stages[0].targets[1].handles == c);
   CHECK(stages[1].start == c2);
-  CHECK(stages[1].targets == std::vector<Handles>{d2});
+  REQUIRE(stages[1].targets.size() == 1);
+  CHECK(stages[1].targets[0].handles == d2);
+  CHECK(stages[1].targets[0].steps == 1);
   CHECK(r.exact());
 }
 
@@ -84,38 +86,44 @@ TEST_CASE("a change of MLS kind or alpha after the first step spoils an exact re
   CHECK(!r.exact());
 }
 
-TEST_CASE("the scene JSON has the scene format's keys, one step per target, and says how to replay it") {
+TEST_CASE("the recorded scene holds the shape, the session's settings and one step per target") {
   SurfaceSettings s;
   s.spacing = 0.03;
   SessionRecording<2> r(circle_source(), s);
-  CHECK_THROWS_AS(scene_json(r, "/tmp/x.json", "x"), std::runtime_error);
+  CHECK_THROWS_WITH_AS(recorded_scene(r, "/tmp/x.json", "x"), doctest::Contains("nothing to save"), std::runtime_error);
+  s.kind = MlsKind::affine;
   editor_step(r, {{1, 0}}, {{1.1, 0.5}}, s, true);
-  const nlohmann::ordered_json j = scene_json(r, "/tmp/x.json", "session");
-  CHECK(j["dimension"] == 2);
-  CHECK(j["name"] == "session");
-  CHECK(j["shape"]["type"] == "circle");
-  CHECK(j["shape"]["points"] == 250);
-  CHECK(j["shape"]["center"] == nlohmann::ordered_json::array({0.0, 0.0}));
-  CHECK(j["grid"]["spacing"] == 0.03);
-  CHECK(j["radius_factor"] == 3.0);
-  CHECK(j["variant"] == "exact");
-  CHECK(j["deformation"]["kind"] == "rigid");
-  CHECK(j["stages"].size() == 1);
-  CHECK(j["stages"][0]["handles"] == nlohmann::ordered_json::parse("[[1.0, 0.0]]"));
-  CHECK(j["stages"][0]["targets"][0]["steps"] == 1);
-  CHECK(j["stages"][0]["targets"][0]["handles"] == nlohmann::ordered_json::parse("[[1.1, 0.5]]"));
-  CHECK(j["description"].get<std::string>().find("`amls deform` replays it") != std::string::npos);
-  // Every double survives the text round trip bit for bit.
-  const auto back = nlohmann::json::parse(j.dump());
-  CHECK(back["stages"][0]["targets"][0]["handles"][0][0].get<double>() == 1.1);
+  const Scene<2> scene = recorded_scene(r, "/tmp/x.json", "session");
+  CHECK(scene.name == "session");
+  CHECK(scene.shape.type == ShapeType::circle);
+  CHECK(scene.shape.points == 250);
+  CHECK(scene.shape.spacing == 0.0);  // a point count, not a spacing: the format takes one of them
+  CHECK(scene.grid_spacing == 0.03);
+  CHECK(scene.h() == 0.03);
+  CHECK(scene.radius_factor == 3.0);
+  CHECK(scene.variant == Variant::exact);
+  CHECK(scene.kind == MlsKind::affine);
+  REQUIRE(scene.history.stages.size() == 1);
+  CHECK(scene.history.stages[0].start == Handles{{1, 0}});
+  CHECK(scene.history.total_steps() == 1);
+  CHECK(scene.description.find("`amls deform` replays it") != std::string::npos);
 }
 
-TEST_CASE("a file shape is named relative to the scene's folder") {
-  ShapeSource file;
-  file.type = ShapeSource::Type::file;
-  file.path = "/data/shapes/bunny.ply";
-  SessionRecording<3> r(file, {});
-  r.deformed({Vec<3>(0, 0, 1)}, {Vec<3>(0, 0, 2)}, {});
-  CHECK(scene_json(r, "/data/scenes/s.json", "s")["shape"]["path"] == "../shapes/bunny.ply");
-  CHECK(scene_json(r, "/data/shapes/s.json", "s")["shape"]["path"] == "bunny.ply");
+TEST_CASE("a shape sampled at h keeps the h it was loaded with when the session changes the grid first") {
+  SceneShape<2> ellipse;  // sampled at the grid's spacing, like a torus or a rounded box
+  ellipse.type = ShapeType::ellipse;
+  ellipse.semi_axes = Vec<2>(1.0, 0.5);
+  SurfaceSettings s;
+  s.spacing = 0.04;
+  SessionRecording<2> r(ellipse, s);
+  editor_step(r, {{1, 0}}, {{1.2, 0}}, s, true);
+  CHECK(recorded_scene(r, "/tmp/x.json", "x").shape.spacing == 0.0);  // the same h: the shape as it was
+
+  SessionRecording<2> regridded(ellipse, s);
+  s.spacing = 0.02;  // set_grid before the first step
+  editor_step(regridded, {{1, 0}}, {{1.2, 0}}, s, true);
+  const Scene<2> scene = recorded_scene(regridded, "/tmp/x.json", "x");
+  CHECK(scene.h() == 0.02);
+  CHECK(scene.sample_spacing() == 0.04);
+  CHECK(regridded.restarted(s).sampled_at() == 0.04);  // and after a reset
 }

@@ -21,6 +21,14 @@ PointSet<D> from_3d(const PointSet<3>& points) {
   }
 }
 
+// The shape's source, if the shape has dimension D.
+template <int D>
+const SceneShape<D>& source_of(const InitialShape& shape) {
+  if (const SceneShape<D>* source = std::get_if<SceneShape<D>>(&shape.source)) return *source;
+  throw std::invalid_argument("a " + std::to_string(shape.dimension()) + "D shape in a " + std::to_string(D) +
+                              "D session");
+}
+
 template <int D>
 std::vector<Vec<D>> handles_from_3d(const std::vector<Vec<3>>& handles) {
   std::vector<Vec<D>> out;
@@ -64,12 +72,9 @@ template <int D>
 EditSession<D>::EditSession(const InitialShape& shape, int threads)
     : threads_(threads),
       initial_{from_3d<D>(shape.points), handles_from_3d<D>(shape.handles), shape.settings, false,
-               SessionRecording<D>(shape.source, shape.settings)},
+               SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
       recording_(initial_.recording) {
-  if (shape.dimension != D)
-    throw std::invalid_argument("a " + std::to_string(shape.dimension) + "D shape in a " + std::to_string(D) +
-                                "D session");
   validate(settings_);
   surface_ = make_surface(settings_);
   restore(initial_);
@@ -235,7 +240,10 @@ EditResult EditSession<D>::set_grid(double spacing, double radius_factor, const 
                                 " points; choose a larger grid spacing");
   std::unique_ptr<DeformingSurface<D>> surface = make_surface(next);  // throws before anything changed
   push_undo();
-  surface->set_points(surface_->points());
+  // Untouched points go in as loaded, the order `amls deform` hands them to its
+  // surface in: the old surface keeps them sorted by its own cells, and another
+  // order of the fits' sums changes the last bits of the resample.
+  surface->set_points(recording_.untouched() ? initial_.points : surface_->points());
   surface_ = std::move(surface);
   settings_ = next;
   ++version_;
@@ -280,7 +288,7 @@ void EditSession<D>::reset() {
   push_undo();
   State start = initial_;
   start.settings = settings_;
-  start.recording = SessionRecording<D>(initial_.recording.shape(), settings_);
+  start.recording = initial_.recording.restarted(settings_);
   restore(start);
 }
 

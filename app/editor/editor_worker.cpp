@@ -1,15 +1,14 @@
 #include "app/editor/editor_worker.hpp"
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <utility>
 
-#include "app/editor/atomic_text_file.hpp"
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/overloaded.hpp"
 #include "app/editor/sampling_quality.hpp"
 #include "core/point_set_io.hpp"
+#include "core/scene.hpp"
 
 namespace amls::editor {
 
@@ -119,7 +118,7 @@ void EditorWorker::run() {
 void EditorWorker::start(const InitialShape& shape) {
   // Build the new session first: if that fails, the current one stays.
   Session next;
-  if (shape.dimension == 2)
+  if (shape.dimension() == 2)
     next = std::make_unique<EditSession<2>>(shape, options_.threads);
   else
     next = std::make_unique<EditSession<3>>(shape, options_.threads);
@@ -132,7 +131,7 @@ void EditorWorker::start(const InitialShape& shape) {
   step_times_.clear();
   for (const std::string& warning : shape.warnings) message(Message::Level::warning, warning);
   std::ostringstream text;
-  text << "Loaded " << shape.name << ": " << describe_count(shape.points.size(), "points") << ", " << shape.dimension
+  text << "Loaded " << shape.name << ": " << describe_count(shape.points.size(), "points") << ", " << shape.dimension()
        << "D, h = " << shape.settings.spacing;
   message(Message::Level::info, text.str());
 }
@@ -169,10 +168,12 @@ void EditorWorker::execute(const QueuedCommand& queued) {
       Overloaded{
           [&](const LoadFile& c) {
             try {
-              start(load_initial_shape(c.path));
+              start(load_initial_shape(c.path, options_.threads));
             } catch (const std::exception& e) {
+              // The readers' messages start with the file's path (and name the key in a scene): say it once.
+              const std::string why = e.what();
               message(Message::Level::error,
-                      std::string("Cannot open ") + c.path + ": " + e.what() +
+                      "Cannot open " + (why.rfind(c.path, 0) == 0 ? why : c.path + ": " + why) +
                           (std::holds_alternative<std::monostate>(session_) ? "" : " (the current surface is kept)"));
             }
           },
@@ -231,7 +232,7 @@ void EditorWorker::execute(const QueuedCommand& queued) {
             require_session([&](auto& s) {
               try {
                 const std::string name = std::filesystem::path(c.path).stem().string();
-                write_text_atomically(c.path, scene_json(s.recording(), c.path, name).dump(2) + "\n");
+                write_scene(c.path, recorded_scene(s.recording(), c.path, name));
                 const std::string note =
                     s.recording().exact() ? "" : " - not an exact replay: " + s.recording().inexact_reason();
                 message(s.recording().exact() ? Message::Level::info : Message::Level::warning,

@@ -8,7 +8,6 @@
 #include "app/editor/scene_start.hpp"
 #include "core/metrics.hpp"
 #include "core/point_set_io.hpp"
-#include "core/shapes.hpp"
 
 namespace amls::editor {
 
@@ -24,12 +23,25 @@ void check_builtin(double radius, std::size_t points, double spacing, std::size_
   require(spacing > 0.0 && std::isfinite(spacing), "grid spacing h must be a positive number");
 }
 
-InitialShape builtin(ShapeSource::Type type, double radius, std::size_t points, double spacing) {
-  InitialShape shape;
-  shape.source.type = type;
-  shape.source.radius = radius;
-  shape.source.points = points;
-  shape.settings.spacing = spacing;
+// A built-in shape as a scene without a history: the default shape of a
+// Scene<D> (a circle in 2D, a sphere in 3D), sampled as `amls deform` would.
+template <int D>
+InitialShape builtin(double radius, std::size_t points, double spacing) {
+  check_builtin(radius, points, spacing, D + 1);
+  Scene<D> scene;
+  scene.shape.radius = radius;
+  scene.shape.points = points;
+  scene.grid_spacing = spacing;
+  return start_from_scene(scene, 1);
+}
+
+// A point-set file opened on its own, as a scene would name it.
+template <int D>
+SceneShape<D> file_shape(const std::string& path) {
+  SceneShape<D> shape;
+  shape.type = ShapeType::file;
+  shape.file = path;
+  shape.resolved_file = path;
   return shape;
 }
 
@@ -56,21 +68,11 @@ double median_spacing(const PointSet<D>& points) {
 }  // namespace
 
 InitialShape make_circle(double radius, std::size_t points, double spacing) {
-  check_builtin(radius, points, spacing, 3);
-  InitialShape shape = builtin(ShapeSource::Type::circle, radius, points, spacing);
-  shape.dimension = 2;
-  shape.points = to_3d(sample_circle(Vec<2>::Zero(), radius, points));
-  shape.name = "circle of " + std::to_string(points) + " points";
-  return shape;
+  return builtin<2>(radius, points, spacing);
 }
 
 InitialShape make_sphere(double radius, std::size_t points, double spacing) {
-  check_builtin(radius, points, spacing, 4);
-  InitialShape shape = builtin(ShapeSource::Type::sphere, radius, points, spacing);
-  shape.dimension = 3;
-  shape.points = sample_sphere(Vec<3>::Zero(), radius, points);
-  shape.name = "sphere of " + std::to_string(points) + " points";
-  return shape;
+  return builtin<3>(radius, points, spacing);
 }
 
 InitialShape default_shape(int dimension) {
@@ -85,9 +87,7 @@ InitialShape load_point_set_file(const std::string& path) {
                              ": the points have no normals, and the editor needs oriented normals (x y z nx ny nz)");
   if (loaded.points.size() < 2) throw std::runtime_error(path + ": a surface needs more than one point");
   InitialShape shape;
-  shape.dimension = loaded.dimension;
-  shape.source.type = ShapeSource::Type::file;
-  shape.source.path = path;
+  shape.source = loaded.dimension == 2 ? ShapeSource(file_shape<2>(path)) : ShapeSource(file_shape<3>(path));
   const double spacing = loaded.dimension == 2 ? median_spacing(to_2d(loaded.points)) : median_spacing(loaded.points);
   if (!(spacing > 0.0)) throw std::runtime_error(path + ": the points all lie at one position");
   shape.settings.spacing = round_significant(spacing, 3);
@@ -97,11 +97,11 @@ InitialShape load_point_set_file(const std::string& path) {
   return shape;
 }
 
-InitialShape load_initial_shape(const std::string& path) {
+InitialShape load_initial_shape(const std::string& path, int threads) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".json") return load_scene_start(path);
+  if (extension == ".json") return load_scene_start(path, threads);
   return load_point_set_file(path);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The shapes a session starts from: built-in circles and spheres, point-set
-// files and scenes. No GL.
+// files and scenes (scene_start.hpp). No GL.
 #include <cstddef>
 #include <string>
 
@@ -23,7 +23,8 @@ InitialShape default_shape(int dimension);
 // or has no normals.
 InitialShape load_point_set_file(const std::string& path);
 
-// A scene (.json) or a point-set file, by the extension.
-InitialShape load_initial_shape(const std::string& path);
+// A scene (.json) or a point-set file, by the extension; `threads` sample a
+// scene's shape file (normal estimation, mesh sampling).
+InitialShape load_initial_shape(const std::string& path, int threads);
 
 }  // namespace amls::editor

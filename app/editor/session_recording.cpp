@@ -1,28 +1,11 @@
 #include "app/editor/session_recording.hpp"
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace amls::editor {
 
 namespace {
-
-using nlohmann::ordered_json;
-
-template <int D>
-ordered_json point_json(const Vec<D>& p) {
-  ordered_json a = ordered_json::array();
-  for (int i = 0; i < D; ++i) a.push_back(p[i]);
-  return a;
-}
-
-template <int D>
-ordered_json points_json(const std::vector<Vec<D>>& points) {
-  ordered_json a = ordered_json::array();
-  for (const Vec<D>& p : points) a.push_back(point_json<D>(p));
-  return a;
-}
 
 // A file shape's path as the scene at `scene_path` must name it: relative to the scene's folder.
 std::string path_from_scene(const std::string& file, const std::string& scene_path) {
@@ -34,21 +17,18 @@ std::string path_from_scene(const std::string& file, const std::string& scene_pa
   return relative.empty() ? target.string() : relative.string();
 }
 
-template <int D>
-ordered_json shape_json(const ShapeSource& shape, const std::string& scene_path) {
-  if (shape.type == ShapeSource::Type::file)
-    return ordered_json{{"type", "file"}, {"path", path_from_scene(shape.path, scene_path)}};
-  return ordered_json{{"type", shape.type == ShapeSource::Type::circle ? "circle" : "sphere"},
-                      {"center", point_json<D>(shape.center.template head<D>())},
-                      {"radius", shape.radius},
-                      {"points", shape.points}};
-}
-
 }  // namespace
 
 template <int D>
-SessionRecording<D>::SessionRecording(ShapeSource shape, const SurfaceSettings& settings)
-    : shape_(std::move(shape)), settings_(settings) {}
+SessionRecording<D>::SessionRecording(SceneShape<D> shape, const SurfaceSettings& settings)
+    : shape_(std::move(shape)), sampled_at_(settings.spacing), settings_(settings) {}
+
+template <int D>
+SessionRecording<D> SessionRecording<D>::restarted(const SurfaceSettings& settings) const {
+  SessionRecording<D> fresh(shape_, settings);
+  fresh.sampled_at_ = sampled_at_;
+  return fresh;
+}
 
 template <int D>
 void SessionRecording<D>::spoil(const std::string& why) {
@@ -87,12 +67,12 @@ void SessionRecording<D>::deformed(std::vector<Vec<D>> from, std::vector<Vec<D>>
 }
 
 template <int D>
-std::vector<RecordedStage<D>> SessionRecording<D>::stages() const {
-  std::vector<RecordedStage<D>> out;
+DeformationHistory<D> SessionRecording<D>::history() const {
+  DeformationHistory<D> out;
   for (const RecordedStep<D>& step : steps_) {
-    const bool continues = !out.empty() && out.back().targets.back() == step.from;
-    if (!continues) out.push_back(RecordedStage<D>{step.from, {}});
-    out.back().targets.push_back(step.to);
+    const bool continues = !out.stages.empty() && out.stages.back().targets.back().handles == step.from;
+    if (!continues) out.begin_stage(step.from);
+    out.add_target(step.to, 1);
   }
   return out;
 }
@@ -105,43 +85,40 @@ std::string SessionRecording<D>::inexact_reason() const {
 }
 
 template <int D>
-ordered_json scene_json(const SessionRecording<D>& recording, const std::string& scene_path, const std::string& name) {
+Scene<D> recorded_scene(const SessionRecording<D>& recording, const std::string& scene_path, const std::string& name) {
   if (recording.steps().empty())
     throw std::runtime_error("nothing to save yet: the session has taken no deformation step (drag a handle first)");
-  const std::vector<RecordedStage<D>> stages = recording.stages();
-  std::string description = "Recorded by amls-editor: " + std::to_string(recording.steps().size()) + " steps in " +
-                            std::to_string(stages.size()) + " stages. ";
+  Scene<D> scene;
+  scene.path = scene_path;
+  scene.name = name;
+  scene.history = recording.history();
+  scene.description = "Recorded by amls-editor: " + std::to_string(recording.steps().size()) + " steps in " +
+                      std::to_string(scene.history.stages.size()) + " stages. ";
   if (!recording.exact())
-    description += "The replay is not exact: " + recording.inexact_reason() + ".";
+    scene.description += "The replay is not exact: " + recording.inexact_reason() + ".";
   else if (recording.no_resample())
-    description += "`amls deform --no-resample` replays it to the session's final point set.";
+    scene.description += "`amls deform --no-resample` replays it to the session's final point set.";
   else
-    description += "`amls deform` replays it to the session's final point set.";
+    scene.description += "`amls deform` replays it to the session's final point set.";
 
   const SurfaceSettings& s = recording.settings();
-  ordered_json scene;
-  scene["dimension"] = D;
-  scene["name"] = name;
-  scene["description"] = description;
-  scene["shape"] = shape_json<D>(recording.shape(), scene_path);
-  scene["grid"] = ordered_json{{"spacing", s.spacing}};
-  scene["radius_factor"] = s.radius_factor;
-  scene["variant"] = to_string(s.variant);
-  scene["deformation"] = ordered_json{{"kind", to_string(s.kind)}, {"alpha", s.alpha}};
-  ordered_json stage_array = ordered_json::array();
-  for (const RecordedStage<D>& stage : stages) {
-    ordered_json targets = ordered_json::array();
-    for (const std::vector<Vec<D>>& target : stage.targets)
-      targets.push_back(ordered_json{{"steps", 1}, {"handles", points_json<D>(target)}});
-    stage_array.push_back(ordered_json{{"handles", points_json<D>(stage.start)}, {"targets", targets}});
-  }
-  scene["stages"] = stage_array;
+  scene.shape = recording.shape();
+  if (scene.shape.type == ShapeType::file) scene.shape.file = path_from_scene(scene.shape.resolved_file, scene_path);
+  // A shape without its own spacing or point count is sampled at h: at the h
+  // it was loaded with, which the saved grid no longer says if it changed.
+  if (scene.shape.points == 0 && scene.shape.spacing == 0.0 && s.spacing != recording.sampled_at())
+    scene.shape.spacing = recording.sampled_at();
+  scene.grid_spacing = s.spacing;
+  scene.radius_factor = s.radius_factor;
+  scene.variant = s.variant;
+  scene.kind = s.kind;
+  scene.alpha = s.alpha;
   return scene;
 }
 
 template class SessionRecording<2>;
 template class SessionRecording<3>;
-template ordered_json scene_json<2>(const SessionRecording<2>&, const std::string&, const std::string&);
-template ordered_json scene_json<3>(const SessionRecording<3>&, const std::string&, const std::string&);
+template Scene<2> recorded_scene<2>(const SessionRecording<2>&, const std::string&, const std::string&);
+template Scene<3> recorded_scene<3>(const SessionRecording<3>&, const std::string&, const std::string&);
 
 }  // namespace amls::editor

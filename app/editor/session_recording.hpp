@@ -1,7 +1,7 @@
 #pragma once
 // What a session did to its surface, kept so that Save Scene can write it as a
-// scene (docs/scene-format.md on the scenes branch) that `amls deform` replays
-// to the session's final point set.
+// scene (docs/scene-format.md, through core's write_scene) that `amls deform`
+// replays to the session's final point set.
 //
 // `amls deform` runs R(P0), D1, R, D2, R, ..., DN, R: a resample of the shape's
 // samples, then for each step the MLS deformation from the step's handles to
@@ -13,11 +13,12 @@
 // (the variant toggled after a step, a grid change, resampling switched on and
 // off, a session ending on an unresampled step) is recorded too, but the scene
 // then says that its replay is not exact, and why. No GL.
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
 #include "app/editor/surface_settings.hpp"
+#include "core/deformation_history.hpp"
+#include "core/scene.hpp"
 
 namespace amls::editor {
 
@@ -27,32 +28,32 @@ struct RecordedStep {
   std::vector<Vec<D>> to;    // and after it
 };
 
-// A stage of the scene format: a fixed handle set, its start positions, and
-// the configurations it went through (one step each).
-template <int D>
-struct RecordedStage {
-  std::vector<Vec<D>> start;
-  std::vector<std::vector<Vec<D>>> targets;
-};
-
 template <int D>
 class SessionRecording {
  public:
-  SessionRecording(ShapeSource shape, const SurfaceSettings& settings);
+  // The shape's points were sampled with `settings` (its spacing is h).
+  SessionRecording(SceneShape<D> shape, const SurfaceSettings& settings);
+  // A recording of the same shape from its start again, with these settings (reset).
+  SessionRecording restarted(const SurfaceSettings& settings) const;
 
   // The surface was resampled (R) with these settings, or deformed (D) by the
   // MLS map taking handles `from` to `to`.
   void resampled(const SurfaceSettings& settings);
   void deformed(std::vector<Vec<D>> from, std::vector<Vec<D>> to, const SurfaceSettings& settings);
 
-  const ShapeSource& shape() const { return shape_; }
+  const SceneShape<D>& shape() const { return shape_; }
+  // The grid spacing h the initial points were sampled at.
+  double sampled_at() const { return sampled_at_; }
   // The settings a replay uses: those of the first resample and step.
   const SurfaceSettings& settings() const { return settings_; }
   const std::vector<RecordedStep<D>>& steps() const { return steps_; }
-  // Consecutive steps whose handles continue each other share a stage; a step
-  // whose handles differ from where the last one left them (a handle was added,
+  // Nothing was done to the initial points yet: neither a resample nor a step.
+  bool untouched() const { return last_ == Op::none; }
+  // The steps as the scene format's stages, one step per target. Consecutive
+  // steps whose handles continue each other share a stage; a step whose
+  // handles differ from where the last one left them (a handle was added,
   // removed or is new) starts a stage.
-  std::vector<RecordedStage<D>> stages() const;
+  DeformationHistory<D> history() const;
 
   // Whether `amls deform` (with --no-resample if no_resample()) gives the
   // session's final point set exactly, and if not, why.
@@ -65,7 +66,8 @@ class SessionRecording {
   enum class Op { none, resample, deform };
   void spoil(const std::string& why);
 
-  ShapeSource shape_;
+  SceneShape<D> shape_;
+  double sampled_at_;
   SurfaceSettings settings_;
   std::vector<RecordedStep<D>> steps_;
   Mode mode_ = Mode::undecided;
@@ -73,18 +75,17 @@ class SessionRecording {
   std::string spoiled_;  // the first reason the replay is not exact
 };
 
-// The recording as a scene: `name` and a description that says how to replay
-// it; a file shape's path relative to the folder of `scene_path`. Throws
+// The recording as a scene for core's write_scene: `name` and a description
+// that says how to replay it; a file shape's path relative to the folder of
+// `scene_path`; a shape sampled at the grid's spacing gets the spacing it was
+// sampled at if the session changed h before its first step. Throws
 // std::runtime_error if there is no step to save (a scene needs a stage).
 template <int D>
-nlohmann::ordered_json scene_json(const SessionRecording<D>& recording, const std::string& scene_path,
-                                  const std::string& name);
+Scene<D> recorded_scene(const SessionRecording<D>& recording, const std::string& scene_path, const std::string& name);
 
 extern template class SessionRecording<2>;
 extern template class SessionRecording<3>;
-extern template nlohmann::ordered_json scene_json<2>(const SessionRecording<2>&, const std::string&,
-                                                     const std::string&);
-extern template nlohmann::ordered_json scene_json<3>(const SessionRecording<3>&, const std::string&,
-                                                     const std::string&);
+extern template Scene<2> recorded_scene<2>(const SessionRecording<2>&, const std::string&, const std::string&);
+extern template Scene<3> recorded_scene<3>(const SessionRecording<3>&, const std::string&, const std::string&);
 
 }  // namespace amls::editor

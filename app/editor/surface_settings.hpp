@@ -1,13 +1,14 @@
 #pragma once
 // What the editor computes its surface with, and where the initial shape came
-// from (as a scene says it: docs/scene-format.md on the scenes branch). No GL.
-#include <cstddef>
+// from (as a scene says it: docs/scene-format.md). No GL.
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/mls_deformation.hpp"
 #include "core/point_set.hpp"
 #include "core/resampler.hpp"
+#include "core/scene.hpp"
 
 namespace amls::editor {
 
@@ -27,25 +28,22 @@ struct SurfaceSettings {
 // Throws std::invalid_argument naming the first field out of range.
 void validate(const SurfaceSettings& settings);
 
-// The initial shape as a scene's `shape` object says it.
-struct ShapeSource {
-  enum class Type { circle, sphere, file };
-  Type type = Type::circle;
-  Vec<3> center = Vec<3>::Zero();  // circle, sphere (z unused in 2D)
-  double radius = 1.0;             // circle, sphere
-  std::size_t points = 0;          // circle, sphere
-  std::string path;                // file: as opened (absolute or relative to the working directory)
-};
+// The initial shape as a scene's `shape` object says it (core/scene.hpp), in
+// the shape's dimension, so that Save Scene writes back what was read: a torus
+// stays a torus.
+using ShapeSource = std::variant<SceneShape<2>, SceneShape<3>>;
 
 // Everything a session starts from.
 struct InitialShape {
-  int dimension = 2;
   PointSet<3> points;  // oriented; 2D sets have z = 0 and nz = 0
   ShapeSource source;
   SurfaceSettings settings;
   std::vector<Vec<3>> handles;  // handles to start with (a scene's first stage)
   std::string name;             // shown in the title and messages
   std::vector<std::string> warnings;
+
+  // The source's dimension is the shape's: one fact, kept once.
+  int dimension() const { return std::holds_alternative<SceneShape<2>>(source) ? 2 : 3; }
 };
 
 }  // namespace amls::editor
