@@ -47,12 +47,13 @@ class GradientFit {
   Evaluation<D> solve(double min_weight) const {
     Evaluation<D> e;
     if (!(sum_w_ >= min_weight) || sum_w_ <= 0.0) return e;
-    const Vec<D> mean_d = sum_d_ / sum_w_;
-    const Vec<D> mean_n = sum_n_ / sum_w_;
-    const double mean_dd = sum_dd_ / sum_w_;
+    const double inverse_w = 1.0 / sum_w_;
+    const Vec<D> mean_d = sum_d_ * inverse_w;
+    const Vec<D> mean_n = sum_n_ * inverse_w;
+    const double mean_dd = sum_dd_ * inverse_w;
     const double variance = mean_dd - mean_d.squaredNorm();
     if (!(variance > 1e-14 * mean_dd)) return e;
-    const double a = 0.5 * (sum_dn_ / sum_w_ - mean_d.dot(mean_n)) / variance;
+    const double a = 0.5 * (sum_dn_ * inverse_w - mean_d.dot(mean_n)) / variance;
     e.gradient = mean_n - 2.0 * a * mean_d;
     e.mean_normal = mean_n;
     e.value = -(e.gradient.dot(mean_d) + a * mean_dd);

@@ -32,6 +32,9 @@ Eigen::Matrix<double, M, 1> apply_constraint(const Eigen::Matrix<double, M, 1>& 
 constexpr double kFlatness = 1e-12;
 // Iterations of the fast path before the dense eigensolver takes over.
 constexpr int kMaxInverseIterations = 12;
+// The unit iterate has converged when it moves less than this: the normal is
+// then accurate to about this much, far below what F's accuracy can notice.
+constexpr double kConverged = 1e-12;
 
 }  // namespace
 
@@ -67,21 +70,21 @@ template <int D>
 bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
   const Eigen::LLT<Matrix> llt(a_);
   if (llt.info() != Eigen::Success) return false;
-  const double scale = a_.norm();
   Coeffs x = start.normalized();
   for (int it = 0; it < kMaxInverseIterations; ++it) {
     const Coeffs y = llt.solve(apply_constraint<kBasis>(x));
     const double n = y.norm();
     if (!std::isfinite(n) || n == 0.0) return false;
-    x = y / n;
-    const Coeffs cx = apply_constraint<kBasis>(x);
-    const double xcx = x.dot(cx);
-    if (!(xcx > 0.0)) continue;
-    const double lambda = x.dot(a_ * x) / xcx;
-    if ((a_ * x - lambda * cx).norm() <= 1e-13 * scale) {
-      alpha_ = x / std::sqrt(xcx);
-      return true;
-    }
+    // The iterates keep their sign once the direction has settled (the
+    // eigenvalue is positive), so a vanishing step means convergence.
+    const Coeffs next = y / n;
+    const double step = (next - x).squaredNorm();
+    x = next;
+    if (step > kConverged * kConverged) continue;
+    const double xcx = x.dot(apply_constraint<kBasis>(x));
+    if (!(xcx > 0.0)) return false;
+    alpha_ = x / std::sqrt(xcx);
+    return true;
   }
   return false;
 }

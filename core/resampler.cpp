@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -48,14 +49,24 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   field_.clear();
   flags_.clear();
   stats_ = ResampleStats{};
+  // Points come in cell order, so consecutive points often share their cell
+  // (nothing new to mark) or their bricks (no new map lookups).
+  IVec<D> previous_cell = IVec<D>::Constant(std::numeric_limits<std::int64_t>::min());
+  IVec<D> block_base = previous_cell;
+  typename VertexField<D>::Block bricks_around;
   for (const Vec<D>& p : surface.points().positions) {
     const IVec<D> cell = grid.cell_of(p);
+    if (cell == previous_cell) continue;
+    previous_cell = cell;
     const IVec<D> lo = cell.array() + kWalkLow;
     const IVec<D> hi = cell.array() + kWalkHigh;
-    const auto block = field_.block(lo);
-    flags_.resize(field_.slots(), 0);
+    if (VertexField<D>::brick_of(lo) != block_base) {
+      bricks_around = field_.block(lo);
+      block_base = VertexField<D>::brick_of(lo);
+      flags_.resize(field_.slots(), 0);
+    }
     for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
-      const std::uint32_t slot = block.slot(v);
+      const std::uint32_t slot = bricks_around.slot(v);
       if (flags_[slot] & kNeeded) return;
       flags_[slot] |= kNeeded;
       ++stats_.vertices;

@@ -38,14 +38,19 @@ Vec<D> oriented_unit_normal(Vec<D> normal, const Vec<D>& orientation, int fallba
   return length > 0.0 ? Vec<D>(normal / length) : Vec<D>::Unit(fallback_axis);
 }
 
-// The crossing by linear interpolation of the ends: the interpolated variant's
-// point, and the exact one's start (and fallback).
+// The normal at parameter t of the segment from its ends' fits.
+template <int D>
+Vec<D> interpolated_normal(const Evaluation<D>& f0, const Evaluation<D>& f1, double t, int fallback_axis) {
+  return oriented_unit_normal<D>((1.0 - t) * f0.gradient + t * f1.gradient,
+                                 (1.0 - t) * f0.mean_normal + t * f1.mean_normal, fallback_axis);
+}
+
+// The crossing by linear interpolation of the ends: the interpolated variant's point.
 template <int D>
 SegmentRoot<D> interpolate_segment_root(const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
   SegmentRoot<D> out;
   out.t = f0.value / (f0.value - f1.value);
-  out.normal = oriented_unit_normal<D>((1.0 - out.t) * f0.gradient + out.t * f1.gradient,
-                                       (1.0 - out.t) * f0.mean_normal + out.t * f1.mean_normal, fallback_axis);
+  out.normal = interpolated_normal(f0, f1, out.t, fallback_axis);
   return out;
 }
 
@@ -73,14 +78,15 @@ inline double hermite_root_guess(double v0, double v1, double s0, double s1, dou
 template <int D, typename Evaluate>
 SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, const Vec<D>& step,
                                    const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
-  SegmentRoot<D> out = interpolate_segment_root(f0, f1, fallback_axis);
+  SegmentRoot<D> out;
+  const double linear_t = f0.value / (f0.value - f1.value);
   // The evaluation with the smallest |F| so far: the root's, at the end.
   double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
   Evaluation<D> best = best_t == 0.0 ? f0 : f1;
   RootOptions options;
   options.tolerance = kSegmentRootTolerance;
   options.value_tolerance = kSegmentRootTolerance * (std::abs(f0.value) + std::abs(f1.value));
-  options.first_guess = hermite_root_guess(f0.value, f1.value, f0.gradient.dot(step), f1.gradient.dot(step), out.t);
+  options.first_guess = hermite_root_guess(f0.value, f1.value, f0.gradient.dot(step), f1.gradient.dot(step), linear_t);
   const RootResult root = find_root(
       [&](double t) -> std::optional<RootSample> {
         const Evaluation<D> e = evaluate(Vec<D>(start + t * step));
@@ -93,13 +99,11 @@ SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, con
       },
       0.0, 1.0, f0.value, f1.value, options);
   out.evaluations = root.evaluations;
-  if (!root.ok) {
-    out.fallback = true;
-    return out;
-  }
-  out.t = root.t;
-  if (root.t == best_t && best.gradient.squaredNorm() > 0.0)
-    out.normal = oriented_unit_normal<D>(best.gradient, best.mean_normal, fallback_axis);
+  out.fallback = !root.ok;
+  out.t = root.ok ? root.t : linear_t;
+  out.normal = root.ok && root.t == best_t && best.gradient.squaredNorm() > 0.0
+                   ? oriented_unit_normal<D>(best.gradient, best.mean_normal, fallback_axis)
+                   : interpolated_normal(f0, f1, out.t, fallback_axis);
   return out;
 }
 

@@ -10,8 +10,9 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 }
 
-FlowSample<2> SingleVortex::sample(const Vec<2>& p, double t) const {
-  const double amplitude = 2.0 * std::cos(kPi * t / period_);
+double SingleVortex::amplitude(double t) const { return 2.0 * std::cos(kPi * t / period_); }
+
+FlowSample<2> SingleVortex::pattern(const Vec<2>& p) const {
   double sx, cx, sy, cy;
   sincos(kPi * p.x(), &sx, &cx);
   sincos(kPi * p.y(), &sy, &cy);
@@ -19,15 +20,15 @@ FlowSample<2> SingleVortex::sample(const Vec<2>& p, double t) const {
   const double s2x = 2 * sx * cx, c2x = 1 - 2 * sx * sx;
   const double s2y = 2 * sy * cy, c2y = 1 - 2 * sy * sy;
   FlowSample<2> f;
-  f.velocity = amplitude * Vec<2>(-sx * sx * sy * cy, sx * cx * sy * sy);
+  f.velocity = Vec<2>(-sx * sx * sy * cy, sx * cx * sy * sy);
   f.jacobian << -0.5 * kPi * s2x * s2y, -kPi * sx * sx * c2y,  //
       kPi * c2x * sy * sy, 0.5 * kPi * s2x * s2y;
-  f.jacobian *= amplitude;
   return f;
 }
 
-FlowSample<3> EnrightField::sample(const Vec<3>& p, double t) const {
-  const double g = std::cos(kPi * t / period_);
+double EnrightField::amplitude(double t) const { return std::cos(kPi * t / period_); }
+
+FlowSample<3> EnrightField::pattern(const Vec<3>& p) const {
   double sx, cx, sy, cy, sz, cz;
   sincos(kPi * p.x(), &sx, &cx);
   sincos(kPi * p.y(), &sy, &cy);
@@ -35,12 +36,11 @@ FlowSample<3> EnrightField::sample(const Vec<3>& p, double t) const {
   const double s2x = 2 * sx * cx, s2y = 2 * sy * cy, s2z = 2 * sz * cz;
   const double c2x = 1 - 2 * sx * sx, c2y = 1 - 2 * sy * sy, c2z = 1 - 2 * sz * sz;
   FlowSample<3> f;
-  f.velocity = g * Vec<3>(2 * sx * sx * s2y * s2z, -s2x * sy * sy * s2z, -s2x * s2y * sz * sz);
+  f.velocity = Vec<3>(2 * sx * sx * s2y * s2z, -s2x * sy * sy * s2z, -s2x * s2y * sz * sz);
   // d/ds sin^2(pi s) = pi sin(2 pi s); d/ds sin(2 pi s) = 2 pi cos(2 pi s).
   f.jacobian << 2 * kPi * s2x * s2y * s2z, 4 * kPi * sx * sx * c2y * s2z, 4 * kPi * sx * sx * s2y * c2z,  //
       -2 * kPi * c2x * sy * sy * s2z, -kPi * s2x * s2y * s2z, -2 * kPi * s2x * sy * sy * c2z,                //
       -2 * kPi * c2x * s2y * sz * sz, -2 * kPi * s2x * c2y * sz * sz, -kPi * s2x * s2y * s2z;
-  f.jacobian *= g;
   return f;
 }
 
@@ -57,7 +57,7 @@ RigidRotation<D>::RigidRotation(const Vec<D>& center, double angular_velocity, c
 }
 
 template <int D>
-FlowSample<D> RigidRotation<D>::sample(const Vec<D>& x, double) const {
+FlowSample<D> RigidRotation<D>::pattern(const Vec<D>& x) const {
   return {generator_ * (x - center_), generator_};
 }
 

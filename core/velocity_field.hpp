@@ -16,11 +16,23 @@ struct FlowSample {
   Mat<D> jacobian;
 };
 
+// Every field here is separable, v(x, t) = amplitude(t) * pattern(x), so that
+// a deformation evaluates the time factor once per time level rather than once
+// per point.
 template <int D>
 class VelocityField {
  public:
   virtual ~VelocityField() = default;
-  virtual FlowSample<D> sample(const Vec<D>& x, double t) const = 0;
+  virtual double amplitude(double t) const = 0;
+  virtual FlowSample<D> pattern(const Vec<D>& x) const = 0;
+
+  FlowSample<D> sample(const Vec<D>& x, double t) const {
+    FlowSample<D> f = pattern(x);
+    const double a = amplitude(t);
+    f.velocity *= a;
+    f.jacobian *= a;
+    return f;
+  }
 };
 
 // The single vortex of eq. (12) with the sign lost in print restored, so that it
@@ -30,7 +42,8 @@ class VelocityField {
 class SingleVortex final : public VelocityField<2> {
  public:
   explicit SingleVortex(double period = 8.0) : period_(period) {}
-  FlowSample<2> sample(const Vec<2>& x, double t) const override;
+  double amplitude(double t) const override;
+  FlowSample<2> pattern(const Vec<2>& x) const override;
 
  private:
   double period_;
@@ -42,7 +55,8 @@ class SingleVortex final : public VelocityField<2> {
 class EnrightField final : public VelocityField<3> {
  public:
   explicit EnrightField(double period = 3.0) : period_(period) {}
-  FlowSample<3> sample(const Vec<3>& x, double t) const override;
+  double amplitude(double t) const override;
+  FlowSample<3> pattern(const Vec<3>& x) const override;
 
  private:
   double period_;
@@ -54,7 +68,8 @@ template <int D>
 class RigidRotation final : public VelocityField<D> {
  public:
   RigidRotation(const Vec<D>& center, double angular_velocity, const Vec<3>& axis = Vec<3>::UnitZ());
-  FlowSample<D> sample(const Vec<D>& x, double t) const override;
+  double amplitude(double) const override { return 1.0; }
+  FlowSample<D> pattern(const Vec<D>& x) const override;
 
  private:
   Vec<D> center_;

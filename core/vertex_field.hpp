@@ -41,6 +41,13 @@ class VertexField {
     std::array<std::uint32_t, 1 << D> bricks_;  // brick index by offset (0 or 1 per axis)
   };
 
+  // The brick holding vertex v.
+  static IVec<D> brick_of(const IVec<D>& v) {
+    IVec<D> brick;
+    for (int a = 0; a < D; ++a) brick[a] = v[a] >> kBrickShift;
+    return brick;
+  }
+
   void clear() {
     brick_of_.clear();
     brick_origin_.clear();
@@ -49,7 +56,7 @@ class VertexField {
   // The block for the vertex box [lo, lo + 4]^D, creating its bricks if needed.
   Block block(const IVec<D>& lo) {
     Block b;
-    for (int a = 0; a < D; ++a) b.base_[a] = lo[a] >> kBrickShift;
+    b.base_ = brick_of(lo);
     for (int k = 0; k < (1 << D); ++k) {
       IVec<D> brick = b.base_;
       for (int a = 0; a < D; ++a) brick[a] += (k >> a) & 1;
@@ -65,10 +72,9 @@ class VertexField {
 
   // The slot of a vertex, if its brick exists.
   std::optional<std::uint32_t> find(const IVec<D>& v) const {
-    IVec<D> brick;
+    const IVec<D> brick = brick_of(v);
     std::uint32_t local = 0;
     for (int a = D - 1; a >= 0; --a) {
-      brick[a] = v[a] >> kBrickShift;
       local = local * static_cast<std::uint32_t>(kBrickSide) + static_cast<std::uint32_t>(v[a] & (kBrickSide - 1));
     }
     const std::uint32_t* index = brick_of_.find(Grid<D>::key(brick));
