@@ -2,7 +2,9 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
@@ -16,7 +18,15 @@ namespace {
 struct BenchOptions {
   int threads = 1;
   std::string json_path;
+  std::vector<std::string> only;
 };
+
+bool selected(const std::string& name, const std::vector<std::string>& only) {
+  if (only.empty()) return true;
+  for (const std::string& part : only)
+    if (name.find(part) != std::string::npos) return true;
+  return false;
+}
 
 nlohmann::json to_json(const BenchCase& c) {
   nlohmann::json timings = nlohmann::json::object();
@@ -50,17 +60,28 @@ void add_bench_command(CLI::App& app) {
       "and 1M points; Enright 128^3. Prints seconds per phase, points per second and peak memory per case");
   add_threads_option(*cmd, options->threads);
   cmd->add_option("--json", options->json_path, R"(write {"cases": [...]} to this file)");
+  cmd->add_option("--only", options->only,
+                  "run only the cases whose name contains this text (repeatable), e.g. --only 50k --only vortex");
   cmd->callback([options] {
+    std::vector<BenchSpec> specs;
+    for (BenchSpec& spec : bench_suite(options->threads))
+      if (selected(spec.name, options->only)) specs.push_back(std::move(spec));
+    if (specs.empty()) {
+      std::string names;
+      for (const BenchSpec& spec : bench_suite(options->threads)) names += "\n  " + spec.name;
+      throw CLI::ValidationError("--only", "no case matches; the cases are:" + names);
+    }
     std::printf("amls bench, %d thread%s, %u hardware threads\n", options->threads, options->threads == 1 ? "" : "s",
                 std::thread::hardware_concurrency());
     std::printf("%-28s %8s %8s %8s %8s %8s %8s %9s %11s %8s  %s\n", "case", "points", "normals", "function",
                 "resample", "deform", "hash", "total s", "points/s", "peak MiB", "result");
     // Rows are printed as each case finishes, so a long suite shows progress.
     nlohmann::json cases = nlohmann::json::array();
-    run_bench_suite(options->threads, [&](const BenchCase& c) {
+    for (const BenchSpec& spec : specs) {
+      const BenchCase c = spec.run();
       print_row(c);
       cases.push_back(to_json(c));
-    });
+    }
     if (!options->json_path.empty()) write_json_file(options->json_path, {{"cases", cases}});
   });
 }

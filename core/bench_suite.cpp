@@ -31,21 +31,26 @@ BenchCase from_flow_test(const std::string& name, const FlowTestReport& r) {
   return c;
 }
 
+std::string sphere_step_name(std::size_t points) {
+  return "3D sphere step, " + std::to_string(points / 1000) + "k points";
+}
+
 }  // namespace
 
 BenchCase bench_sphere_step(std::size_t points, int threads) {
   reset_peak_memory();
   const double radius = 0.3;
   const Vec<3> center(0.5, 0.5, 0.5);
-  // A grid-resampled sphere has about area / h^2 points.
-  const double h = std::sqrt(4.0 * std::numbers::pi * radius * radius / static_cast<double>(points));
+  // A grid-resampled sphere has about 0.83 area / h^2 points (measured: the
+  // HAVECLOSEPOINT rule keeps about 0.83 of the edge crossings' density).
+  const double h = std::sqrt(0.83 * 4.0 * std::numbers::pi * radius * radius / static_cast<double>(points));
   DeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, threads);
   surface.set_points(sample_sphere(center, radius, points));
   surface.resample_only();
   const FlowDeformation<3> rotation(std::make_shared<RigidRotation<3>>(center, 1.0, Vec<3>::UnitZ()), 1);
   const StepStats stats = surface.step(rotation, 0.0, 0.01);
   BenchCase c;
-  c.name = "3D sphere step, " + std::to_string(points / 1000) + "k points";
+  c.name = sphere_step_name(points);
   c.points = c.points_processed = stats.points_before;
   c.timings = stats.timings.phases();
   c.peak_memory_mib = peak_memory_mib();
@@ -54,27 +59,30 @@ BenchCase bench_sphere_step(std::size_t points, int threads) {
   return c;
 }
 
-std::vector<BenchCase> run_bench_suite(int threads, const std::function<void(const BenchCase&)>& finished) {
-  std::vector<BenchCase> cases;
-  auto add = [&](BenchCase c) {
-    cases.push_back(std::move(c));
-    if (finished) finished(cases.back());
-  };
-  FlowTestConfig vortex;
-  vortex.grid = 512;
-  vortex.threads = threads;
+std::vector<BenchSpec> bench_suite(int threads) {
+  std::vector<BenchSpec> specs;
   for (const FlowVariant variant : {FlowVariant::exact, FlowVariant::interpolated}) {
-    vortex.variant = variant;
-    reset_peak_memory();
-    add(from_flow_test(std::string("2D vortex 512^2 ") + to_string(variant), run_vortex_test(vortex).report));
+    const std::string name = std::string("2D vortex 512^2 ") + to_string(variant);
+    specs.push_back({name, [name, variant, threads] {
+                       FlowTestConfig vortex;
+                       vortex.grid = 512;
+                       vortex.threads = threads;
+                       vortex.variant = variant;
+                       reset_peak_memory();
+                       return from_flow_test(name, run_vortex_test(vortex).report);
+                     }});
   }
-  for (const std::size_t n : {50000u, 200000u, 1000000u}) add(bench_sphere_step(n, threads));
-  FlowTestConfig enright;
-  enright.grid = 128;
-  enright.threads = threads;
-  reset_peak_memory();
-  add(from_flow_test("3D Enright 128^3 exact", run_enright_test(enright).report));
-  return cases;
+  for (const std::size_t n : {50000u, 200000u, 1000000u})
+    specs.push_back({sphere_step_name(n), [n, threads] { return bench_sphere_step(n, threads); }});
+  const std::string enright_name = "3D Enright 128^3 exact";
+  specs.push_back({enright_name, [enright_name, threads] {
+                     FlowTestConfig enright;
+                     enright.grid = 128;
+                     enright.threads = threads;
+                     reset_peak_memory();
+                     return from_flow_test(enright_name, run_enright_test(enright).report);
+                   }});
+  return specs;
 }
 
 }  // namespace amls

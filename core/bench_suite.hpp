@@ -30,7 +30,13 @@ struct BenchCase {
 // `points` points.
 BenchCase bench_sphere_step(std::size_t points, int threads);
 
-// Runs the suite; `finished` is called with each case as soon as it is done.
-std::vector<BenchCase> run_bench_suite(int threads, const std::function<void(const BenchCase&)>& finished = {});
+// A case of the suite, named before it runs so that callers can pick cases.
+struct BenchSpec {
+  std::string name;
+  std::function<BenchCase()> run;
+};
+
+// The suite's cases in order, none run yet.
+std::vector<BenchSpec> bench_suite(int threads);
 
 }  // namespace amls

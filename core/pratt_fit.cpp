@@ -35,6 +35,7 @@ constexpr int kMaxInverseIterations = 12;
 // The unit iterate has converged when it moves less than this: the normal is
 // then accurate to about this much, far below what F's accuracy can notice.
 constexpr double kConverged = 1e-12;
+constexpr double kRegularization = 1e-13;
 
 }  // namespace
 
@@ -68,7 +69,12 @@ FitStatus PrattFit<D>::solve(const Vec<D>& carried, Vec<D>& normal) {
 // i.e. alpha^T C alpha <= 0) or when A is not positive definite.
 template <int D>
 bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
-  const Eigen::LLT<Matrix> llt(a_);
+  // Points exactly on a sphere or plane make A singular (that sphere is its
+  // null vector, with lambda = 0). A relative diagonal shift of kRegularization
+  // makes it factorizable and moves the solution by about as much.
+  Eigen::LLT<Matrix> llt(a_);
+  if (llt.info() != Eigen::Success)
+    llt.compute(a_ + Matrix::Identity() * (kRegularization * a_.trace() / kBasis));
   if (llt.info() != Eigen::Success) return false;
   Coeffs x = start.normalized();
   for (int it = 0; it < kMaxInverseIterations; ++it) {
