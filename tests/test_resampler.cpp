@@ -33,6 +33,26 @@ TEST_CASE("exact resampling of a circle puts every new point on F = 0, well spac
   CHECK(*std::max_element(nn.begin(), nn.end()) < 2.0 * h);
 }
 
+TEST_CASE("HAVECLOSEPOINT keeps the crossing nearest each vertex: spacings right after a resample lie in [0.5 h, 1.5 h]") {
+  // Circles of many radii and sub-cell offsets meet the grid's vertices at
+  // every angle; the walk-order rule of the paper left gaps up to 1.6 h here.
+  ThreadPool pool(1);
+  const Grid<2> grid = Grid<2>::unit(64);
+  const double h = grid.spacing();
+  double smallest = 1e300;
+  double largest = 0.0;
+  for (int k = 0; k < 12; ++k) {
+    const Vec<2> center(0.5 + 0.37 * h * k / 12.0, 0.5 + 0.71 * h * ((k * 5) % 12) / 12.0);
+    const double radius = 0.12 + 0.02 * k;
+    const auto surface = ready_surface(sample_circle(center, radius, 400), grid, pool);
+    const auto nn = nearest_neighbour_distances<2>(resample_once(surface, Variant::exact, pool).positions);
+    smallest = std::min(smallest, *std::min_element(nn.begin(), nn.end()));
+    largest = std::max(largest, *std::max_element(nn.begin(), nn.end()));
+  }
+  CHECK(smallest >= 0.5 * h);
+  CHECK(largest <= 1.5 * h);
+}
+
 TEST_CASE("exact resampling of a sphere puts every new point on the sphere, well spaced, with no hole") {
   ThreadPool pool(2);
   const auto surface = test::sphere_surface(pool);
