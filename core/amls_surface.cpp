@@ -171,6 +171,57 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
 }
 
 template <int D>
+void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
+                                   const std::array<Vec<D>, kCubeCorners>& corners,
+                                   std::array<Evaluation<D>, kCubeCorners>& out) const {
+  constexpr int V = kCubeCorners;
+  if (parameters_.orientation_filter && !neighbourhood.consistent) {
+    // Each corner has its own orientation reference: one at a time.
+    for (int v = 0; v < V; ++v) out[v] = evaluate_in(neighbourhood, corners[v]);
+    return;
+  }
+  // Structure of arrays over the corners, so that each line below is one
+  // vector operation across them.
+  double y[D][V];
+  for (int v = 0; v < V; ++v)
+    for (int a = 0; a < D; ++a) y[a][v] = corners[v][a];
+  double sum_w[V] = {}, sum_dn[V] = {}, sum_dd[V] = {}, sum_d[D][V] = {}, sum_n[D][V] = {};
+  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  const std::size_t n = neighbourhood.positions.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec<D>& p = neighbourhood.positions[k];
+    const Vec<D>& normal = neighbourhood.normals[k];
+    double d[D][V], dd[V], w[V];
+    for (int v = 0; v < V; ++v) dd[v] = 0.0;
+    for (int a = 0; a < D; ++a)
+      for (int v = 0; v < V; ++v) {
+        d[a][v] = p[a] - y[a][v];
+        dd[v] += d[a][v] * d[a][v];
+      }
+    for (int v = 0; v < V; ++v) {
+      const double c = std::max(0.0, 1.0 - dd[v] * inverse_r2);
+      w[v] = (c * c) * (c * c);
+      sum_w[v] += w[v];
+      sum_dd[v] += w[v] * dd[v];
+    }
+    for (int a = 0; a < D; ++a)
+      for (int v = 0; v < V; ++v) {
+        sum_d[a][v] += w[v] * d[a][v];
+        sum_n[a][v] += w[v] * normal[a];
+        sum_dn[v] += w[v] * d[a][v] * normal[a];
+      }
+  }
+  for (int v = 0; v < V; ++v) {
+    Vec<D> sd, sn;
+    for (int a = 0; a < D; ++a) {
+      sd[a] = sum_d[a][v];
+      sn[a] = sum_n[a][v];
+    }
+    out[v] = GradientFit<D>(sum_w[v], sd, sn, sum_dn[v], sum_dd[v]).solve(parameters_.min_weight);
+  }
+}
+
+template <int D>
 FitStatus AmlsSurface<D>::pseudo_normal_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p,
                                           const Vec<D>& carried, Vec<D>& normal) const {
   const double inverse_radius = 1.0 / radius_;

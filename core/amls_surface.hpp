@@ -2,6 +2,7 @@
 // The AMLS surface S(P) of a point set (paper, section 2): the points, their
 // neighbour index, their pseudo-normals (Step 1) and F with its fit gradient
 // (Step 2) at any position.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -95,6 +96,13 @@ class AmlsSurface {
   void select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
   // F at y from a neighbourhood holding every point within Delta of y.
   Evaluation<D> evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
+  // F at the 2^D corners of a grid cube, all from one neighbourhood holding
+  // every point within Delta of each of them: one pass over the neighbours
+  // serves all corners, with the corners in the innermost loop, where the
+  // compiler vectorizes them. Gives evaluate_in()'s values.
+  static constexpr int kCubeCorners = 1 << D;
+  void evaluate_cube(const Neighbourhood<D>& neighbourhood, const std::array<Vec<D>, kCubeCorners>& corners,
+                     std::array<Evaluation<D>, kCubeCorners>& out) const;
   // Step 1 at p, which carries the normal `carried`, from a neighbourhood holding
   // the positions and carried normals of every point within Delta of p: the fit
   // and orientation filter of update_normals(), for callers with their own

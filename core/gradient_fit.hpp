@@ -28,6 +28,11 @@ struct Evaluation {
 template <int D>
 class GradientFit {
  public:
+  GradientFit() = default;
+  // A fit from sums a caller accumulated itself (see add() for their meaning).
+  GradientFit(double sum_w, const Vec<D>& sum_d, const Vec<D>& sum_n, double sum_dn, double sum_dd)
+      : sum_w_(sum_w), sum_d_(sum_d), sum_n_(sum_n), sum_dn_(sum_dn), sum_dd_(sum_dd) {}
+
   // d: neighbour position minus x; normal: its pseudo-normal; w: its weight
   // (zero adds nothing, so callers can stay free of branches).
   void add(const Vec<D>& d, const Vec<D>& normal, double w) { add(d, d.squaredNorm(), normal, w); }

@@ -25,6 +25,14 @@ constexpr std::uint8_t kPositive = 4;  // F >= 0 (a zero counts as positive)
 constexpr std::int64_t kWalkLow = -1;
 constexpr std::int64_t kWalkHigh = 2;
 
+// Corner v of the unit cube: bit a of v is the offset along axis a.
+template <int D>
+IVec<D> corner_offset(int v) {
+  IVec<D> offset;
+  for (int a = 0; a < D; ++a) offset[a] = (v >> a) & 1;
+  return offset;
+}
+
 template <int D>
 std::uint8_t sign_flags(const Evaluation<D>& e) {
   if (!e.defined) return 0;
@@ -87,6 +95,8 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int block) {
     std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(block)];
     Neighbourhood<D> neighbourhood;
+    std::array<Vec<D>, AmlsSurface<D>::kCubeCorners> corners;
+    std::array<Evaluation<D>, AmlsSurface<D>::kCubeCorners> corner_values;
     for (std::size_t b = begin; b < end; ++b) {
       const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
       const Vec<D> centre = grid.vertex_position(field_.vertex_of(first)).array() + half_box;
@@ -101,20 +111,23 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       const IVec<D> brick_origin = field_.vertex_of(first);
       for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Ones(), [&](const IVec<D>& cube) {
         const IVec<D> lo = 2 * cube;
-        const IVec<D> hi = lo.array() + 1;
+        std::array<std::uint32_t, AmlsSurface<D>::kCubeCorners> slots;
         bool needed = false;
-        for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& offset) {
-          needed = needed || (flags_[VertexField<D>::slot_in_brick(first, offset)] & kNeeded);
-        });
+        for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
+          const IVec<D> offset = lo + corner_offset<D>(v);
+          slots[v] = VertexField<D>::slot_in_brick(first, offset);
+          corners[v] = grid.vertex_position(brick_origin + offset);
+          needed = needed || (flags_[slots[v]] & kNeeded);
+        }
         if (!needed) return;
         const Vec<D> cube_centre = grid.vertex_position(brick_origin + lo).array() + 0.5 * h;
         surface.select(brick_ids, cube_centre, cube_reach, neighbourhood);
-        for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& offset) {
-          const std::uint32_t s = VertexField<D>::slot_in_brick(first, offset);
-          if (!(flags_[s] & kNeeded)) return;
-          values_[s] = surface.evaluate_in(neighbourhood, grid.vertex_position(brick_origin + offset));
-          flags_[s] |= sign_flags(values_[s]);
-        });
+        surface.evaluate_cube(neighbourhood, corners, corner_values);
+        for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
+          if (!(flags_[slots[v]] & kNeeded)) continue;
+          values_[slots[v]] = corner_values[v];
+          flags_[slots[v]] |= sign_flags(corner_values[v]);
+        }
       });
     }
   });

@@ -1,5 +1,8 @@
 #include <doctest/doctest.h>
 
+#include <array>
+#include <vector>
+
 #include "core/shapes.hpp"
 #include "surface_fixtures.hpp"
 
@@ -28,4 +31,52 @@ TEST_CASE("pseudo-normals of a sampled sphere are radial and keep the carried or
   const auto s = ready_surface(std::move(sphere), Grid<3>::unit(64), pool);
   for (std::size_t i = 0; i < s.points().size(); i += 97)
     CHECK(s.pseudo_normals()[i].dot(-(s.points().positions[i] - c).normalized()) > 1 - 1e-9);
+}
+
+namespace {
+
+// evaluate_cube() against evaluate_in() at the corners of cubes around a
+// surface point: the same value, gradient and definedness. Returns whether
+// the neighbourhood's normals were consistent (the one-pass path).
+template <int D>
+bool check_cube_matches_single_evaluations(const AmlsSurface<D>& s, const Vec<D>& near) {
+  const double h = s.grid().spacing();
+  std::vector<std::uint32_t> ids;
+  s.gather_ids(near, s.radius() + 2.0 * h, ids);
+  Neighbourhood<D> neighbourhood;
+  s.select(ids, near, s.radius() + h, neighbourhood);
+  std::array<Vec<D>, AmlsSurface<D>::kCubeCorners> corners;
+  for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
+    corners[v] = near;
+    for (int a = 0; a < D; ++a) corners[v][a] += ((v >> a) & 1 ? 0.5 : -0.5) * h;
+  }
+  std::array<Evaluation<D>, AmlsSurface<D>::kCubeCorners> values;
+  s.evaluate_cube(neighbourhood, corners, values);
+  for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
+    const Evaluation<D> single = s.evaluate_in(neighbourhood, corners[v]);
+    REQUIRE(values[v].defined == single.defined);
+    CHECK(values[v].value == doctest::Approx(single.value).epsilon(1e-12).scale(h));
+    CHECK((values[v].gradient - single.gradient).norm() < 1e-12);
+  }
+  return neighbourhood.consistent;
+}
+
+}  // namespace
+
+TEST_CASE("F at a cube's corners in one pass equals F corner by corner, with and without the orientation filter") {
+  ThreadPool pool(1);
+  const auto circle = ready_surface(sample_circle(Vec<2>(0.5, 0.5), 0.2, 200), Grid<2>::unit(128), pool);
+  CHECK(check_cube_matches_single_evaluations<2>(circle, Vec<2>(0.7, 0.5)));
+  const auto sphere = ready_surface(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, 3000), Grid<3>::unit(64), pool);
+  CHECK(check_cube_matches_single_evaluations<3>(sphere, Vec<3>(0.5, 0.5, 0.7)));
+  // A filament thinner than Delta: two sheets with opposite normals, so the
+  // neighbourhood is not consistent and each corner filters on its own.
+  PointSet<2> strip;
+  for (int k = 0; k < 100; ++k) {
+    const double x = 0.3 + 0.004 * k;
+    strip.add(Vec<2>(x, 0.5), Vec<2>(0.0, -1.0));
+    strip.add(Vec<2>(x, 0.5 + 0.01), Vec<2>(0.0, 1.0));
+  }
+  const auto thin = ready_surface(std::move(strip), Grid<2>::unit(128), pool);
+  CHECK_FALSE(check_cube_matches_single_evaluations<2>(thin, Vec<2>(0.5, 0.505)));
 }
