@@ -69,3 +69,17 @@ TEST_CASE("the Hermite guess recovers a cubic's root exactly and falls back outs
   // Slopes that contradict the values send Newton off the segment: no guess.
   CHECK(std::isnan(hermite_root_guess(-1.0, 1.0, -20.0, -20.0, 0.1)));
 }
+
+TEST_CASE("find_root stops early at a jump that is not a zero and says so") {
+  // A step from -1 to +1 at 0.3141: no root, only a discontinuity. Bisecting
+  // to 1e-12 would take about 40 more evaluations.
+  auto g = [](double t) -> std::optional<RootSample> { return RootSample{t < 0.3141 ? -1.0 - t : 1.0 + t}; };
+  const RootResult r = find_root(g, 0.0, 1.0, -1.0, 2.0, tolerance(1e-12));
+  REQUIRE(r.ok);
+  CHECK(r.jump);
+  CHECK(r.t == doctest::Approx(0.3141).epsilon(0.01));
+  CHECK(r.evaluations <= kFastSteps + 8);
+  // A smooth function is never taken for a jump, however steep.
+  auto steep = [](double t) -> std::optional<RootSample> { return RootSample{std::tanh(200.0 * (t - 0.3141))}; };
+  CHECK_FALSE(find_root(steep, 0.0, 1.0, std::tanh(-200.0 * 0.3141), std::tanh(200.0 * 0.6859), tolerance(1e-12)).jump);
+}
