@@ -122,15 +122,20 @@ void AmlsSurface<D>::gather_ids(const Vec<D>& x, double radius, std::vector<std:
 template <int D>
 void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
                             Neighbourhood<D>& out) const {
-  out.positions.clear();
-  out.normals.clear();
+  // Sized for every candidate, then cut to those kept: no capacity checks in the loop.
+  out.positions.resize(ids.size());
+  out.normals.resize(ids.size());
   const double r2 = radius * radius;
+  std::size_t kept = 0;
   for (const std::uint32_t id : ids) {
     const Vec<D>& q = points_.positions[id];
     if ((q - x).squaredNorm() > r2) continue;
-    out.positions.push_back(q);
-    out.normals.push_back(pseudo_normals_[id]);
+    out.positions[kept] = q;
+    out.normals[kept] = pseudo_normals_[id];
+    ++kept;
   }
+  out.positions.resize(kept);
+  out.normals.resize(kept);
   Vec<D> mean = Vec<D>::Zero();
   for (const Vec<D>& n : out.normals) mean += n;
   const double threshold = std::sqrt(0.5) * mean.norm();  // cos 45 degrees, times |mean|

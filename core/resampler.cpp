@@ -112,21 +112,23 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Ones(), [&](const IVec<D>& cube) {
         const IVec<D> lo = 2 * cube;
         std::array<std::uint32_t, AmlsSurface<D>::kCubeCorners> slots;
-        bool needed = false;
+        int needed = 0;
         for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
           const IVec<D> offset = lo + corner_offset<D>(v);
           slots[v] = VertexField<D>::slot_in_brick(first, offset);
           corners[v] = grid.vertex_position(brick_origin + offset);
-          needed = needed || (flags_[slots[v]] & kNeeded);
+          needed += (flags_[slots[v]] & kNeeded) ? 1 : 0;
         }
-        if (!needed) return;
+        if (needed == 0) return;
         const Vec<D> cube_centre = grid.vertex_position(brick_origin + lo).array() + 0.5 * h;
         surface.select(brick_ids, cube_centre, cube_reach, neighbourhood);
-        surface.evaluate_cube(neighbourhood, corners, corner_values);
+        // One pass for all corners pays when most of them are needed.
+        const bool whole_cube = 2 * needed >= AmlsSurface<D>::kCubeCorners;
+        if (whole_cube) surface.evaluate_cube(neighbourhood, corners, corner_values);
         for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
           if (!(flags_[slots[v]] & kNeeded)) continue;
-          values_[slots[v]] = corner_values[v];
-          flags_[slots[v]] |= sign_flags(corner_values[v]);
+          values_[slots[v]] = whole_cube ? corner_values[v] : surface.evaluate_in(neighbourhood, corners[v]);
+          flags_[slots[v]] |= sign_flags(values_[slots[v]]);
         }
       });
     }
