@@ -114,9 +114,10 @@ Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
 }
 
 template <int D>
-void AmlsSurface<D>::gather_ids(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
+void AmlsSurface<D>::gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radius,
+                                std::vector<std::uint32_t>& out) const {
   require_ready();
-  index_.gather(x, radius, out);
+  index_.gather(lo, hi, radius, out);
 }
 
 template <int D>

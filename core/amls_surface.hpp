@@ -90,8 +90,8 @@ class AmlsSurface {
   // F(x) and the fit's gradient, over all points within Delta of x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
 
-  // Appends the ids of the points within `radius` of x.
-  void gather_ids(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const;
+  // Appends the ids of the points within `radius` of the box [lo, hi].
+  void gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const;
   // Fills `out` with those of the points `ids` that lie within `radius` of x.
   void select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
   // F at y from a neighbourhood holding every point within Delta of y.

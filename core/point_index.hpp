@@ -59,9 +59,16 @@ class PointIndex {
     for (std::uint32_t k = 0; k < ids_.size(); ++k) ids_[k] = k;
   }
 
-  // The ids of the points within `radius` of x, appended to `out`.
-  void gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const {
-    for_each_within(x, radius, [&](std::uint32_t id, const Vec<D>&) { out.push_back(id); });
+  // The ids of the points within `radius` of the box [lo, hi] (a point when
+  // lo = hi), appended to `out` in the order of for_each_in_cells.
+  void gather(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const {
+    if (!cells_) return;
+    const double r2 = radius * radius;
+    for_each_in_cells(cells_->cell_of(lo - Vec<D>::Constant(radius)), cells_->cell_of(hi + Vec<D>::Constant(radius)),
+                      [&](std::uint32_t id, const Vec<D>& q) {
+                        const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
+                        if (outside.squaredNorm() <= r2) out.push_back(id);
+                      });
   }
 
  private:

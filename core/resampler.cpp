@@ -86,8 +86,7 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   // within Delta of the brick's box of edges, [origin, origin + 4h]^D.
   values_.resize(field_.slots());
   const double h = grid.spacing();
-  const double half_box = 0.5 * h * static_cast<double>(VertexField<D>::kBrickSide);
-  const double reach = surface.radius() + half_box * std::sqrt(static_cast<double>(D));
+  const double box_side = h * static_cast<double>(VertexField<D>::kBrickSide);
   const double cube_reach = surface.radius() + 0.5 * h * std::sqrt(static_cast<double>(D));
   const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
   brick_points_.assign(static_cast<std::size_t>(pool.threads()), {});
@@ -99,11 +98,12 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
     std::array<Evaluation<D>, AmlsSurface<D>::kCubeCorners> corner_values;
     for (std::size_t b = begin; b < end; ++b) {
       const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
-      const Vec<D> centre = grid.vertex_position(field_.vertex_of(first)).array() + half_box;
+      const Vec<D> box_lo = grid.vertex_position(field_.vertex_of(first));
+      const Vec<D> box_hi = box_lo.array() + box_side;
       BrickPoints& range = brick_range_[b];
       range.block = block;
       range.begin = static_cast<std::uint32_t>(ids.size());
-      surface.gather_ids(centre, reach, ids);
+      surface.gather_ids(box_lo, box_hi, surface.radius(), ids);
       range.end = static_cast<std::uint32_t>(ids.size());
       // Vertices are evaluated by cubes of 2^D, each from the brick's points
       // within reach of that cube, so that few candidates are wasted.

@@ -42,7 +42,7 @@ template <int D>
 bool check_cube_matches_single_evaluations(const AmlsSurface<D>& s, const Vec<D>& near) {
   const double h = s.grid().spacing();
   std::vector<std::uint32_t> ids;
-  s.gather_ids(near, s.radius() + 2.0 * h, ids);
+  s.gather_ids(near, near, s.radius() + 2.0 * h, ids);
   Neighbourhood<D> neighbourhood;
   s.select(ids, near, s.radius() + h, neighbourhood);
   std::array<Vec<D>, AmlsSurface<D>::kCubeCorners> corners;

@@ -18,22 +18,29 @@ void check_against_brute_force(double cell, double radius, unsigned seed) {
     for (int a = 0; a < D; ++a) p[a] = u(rng);
   PointIndex<D> index;
   index.build(pts, Vec<D>::Zero(), cell);
-  for (int q = 0; q < 200; ++q) {
-    Vec<D> x;
-    for (int a = 0; a < D; ++a) x[a] = u(rng);
+  std::uniform_real_distribution<double> extent(0.0, 0.15);
+  for (int q = 0; q < 400; ++q) {
+    // Even queries are points, odd ones boxes.
+    Vec<D> lo, hi;
+    for (int a = 0; a < D; ++a) {
+      lo[a] = u(rng);
+      hi[a] = lo[a] + (q % 2 ? extent(rng) : 0.0);
+    }
     std::vector<std::uint32_t> found;
-    index.gather(x, radius, found);
+    index.gather(lo, hi, radius, found);
     std::sort(found.begin(), found.end());
     std::vector<std::uint32_t> expected;
-    for (std::uint32_t i = 0; i < pts.size(); ++i)
-      if ((pts[i] - x).norm() <= radius) expected.push_back(i);
+    for (std::uint32_t i = 0; i < pts.size(); ++i) {
+      const Vec<D> nearest = pts[i].cwiseMax(lo).cwiseMin(hi);  // the box's point nearest to it
+      if ((pts[i] - nearest).norm() <= radius) expected.push_back(i);
+    }
     REQUIRE(found == expected);
   }
 }
 
 }  // namespace
 
-TEST_CASE("neighbour queries find exactly the points a brute-force search finds") {
+TEST_CASE("neighbour queries around points and boxes find exactly the points a brute-force search finds") {
   check_against_brute_force<2>(0.05, 0.05, 1);
   check_against_brute_force<2>(0.05, 0.13, 2);  // radius wider than a cell
   check_against_brute_force<3>(0.1, 0.1, 3);
