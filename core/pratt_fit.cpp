@@ -99,13 +99,14 @@ bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
 // smallest non-negative lambda whose eigenvector satisfies alpha^T C alpha > 0.
 template <int D>
 bool PrattFit<D>::solve_by_eigen_decomposition() {
-  Matrix c_inverse_a = a_;
-  c_inverse_a.row(0) = -0.5 * a_.row(kBasis - 1);
-  c_inverse_a.row(kBasis - 1) = -0.5 * a_.row(0);
+  const Matrix a = full_a();
+  Matrix c_inverse_a = a;
+  c_inverse_a.row(0) = -0.5 * a.row(kBasis - 1);
+  c_inverse_a.row(kBasis - 1) = -0.5 * a.row(0);
   const Eigen::EigenSolver<Matrix> solver(c_inverse_a);
   if (solver.info() != Eigen::Success) return false;
 
-  const double tolerance = 1e-12 * a_.norm();
+  const double tolerance = 1e-12 * a.norm();
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < kBasis; ++k) {
     const auto value = solver.eigenvalues()[k];

@@ -35,7 +35,12 @@ class PrattFit {
     q[0] = 1.0;
     q.template segment<D>(1) = u;
     q[D + 1] = u.squaredNorm();
-    a_.noalias() += w * q * q.transpose();
+    // Only the lower triangle: the Cholesky factorization reads no more, and
+    // full_a() mirrors it where the whole matrix is needed.
+    for (int j = 0; j < kBasis; ++j) {
+      const double wq = w * q[j];
+      for (int i = j; i < kBasis; ++i) a_(i, j) += wq * q[i];
+    }
     scatter_.noalias() += w * u * u.transpose();
     ++count_;
   }
@@ -52,7 +57,9 @@ class PrattFit {
   bool solve_by_inverse_iteration(const Coeffs& start);
   bool solve_by_eigen_decomposition();
 
-  Matrix a_ = Matrix::Zero();
+  Matrix full_a() const { return a_.template selfadjointView<Eigen::Lower>(); }
+
+  Matrix a_ = Matrix::Zero();  // lower triangle of A
   Mat<D> scatter_ = Mat<D>::Zero();  // second moment about the point, for the degeneracy test
   int count_ = 0;
   Coeffs alpha_ = Coeffs::Zero();
