@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 
 #include "app/editor/edit_session.hpp"
 #include "app/editor/initial_shape.hpp"
@@ -24,8 +25,8 @@ std::pair<double, double> x_range(const PointSet<2>& points) {
 }
 
 // The unit circle with handles on its left and right ends.
-EditSession<2> circle_with_two_handles() {
-  EditSession<2> session(make_circle(1.0, 250, 0.024), 1);
+EditSession<2> circle_with_two_handles(int threads = 1) {
+  EditSession<2> session(make_circle(1.0, 250, 0.024), threads);
   session.add_handle(Vec<2>(-1.0, 0.0));
   session.add_handle(Vec<2>(1.0, 0.0));
   return session;
@@ -100,6 +101,72 @@ TEST_CASE("a step stopped between its phases leaves the session as before it") {
   std::vector<Vec<2>> to = session.handles();
   to[1].x() = 1.3;
   CHECK(session.move_handles(to, kRunAll).stepped);
+}
+
+TEST_CASE("a step stopped anywhere inside its phases leaves the session as before it, and runs the same after") {
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    EditSession<2> reference = circle_with_two_handles(threads);
+    std::vector<Vec<2>> to = reference.handles();
+    to[1].x() = 1.3;
+    REQUIRE(reference.move_handles(to, kRunAll).stepped);  // no check: each pool block runs whole
+
+    EditSession<2> session = circle_with_two_handles(threads);
+    const PointSet<2> start = session.points();
+    session.evaluable_surface();  // pseudo-normals of the start, as the 2D curve has them before a step
+    // From the k-th poll on the control says stop, for k = 1, 2, ... until the
+    // step gets through: so it is stopped before each phase and at every poll
+    // inside one, in every loop of every phase.
+    std::atomic<int> polls{0};
+    int stop_at = 0;
+    const WorkControl control{[&] { return ++polls >= stop_at; }, {}};
+    EditResult result;
+    int stops = 0;
+    for (stop_at = 1;; ++stop_at) {
+      polls = 0;
+      result = session.move_handles(to, control);
+      if (!result.cancelled) break;
+      ++stops;
+      CHECK(!result.changed);
+      CHECK(session.points().positions == start.positions);
+      CHECK(session.points().normals == start.normals);
+      CHECK(session.handles()[1].x() == 1.0);
+      CHECK(session.recording().steps().empty());
+      CHECK(session.evaluable_surface().evaluate(Vec<2>(1.0, 0.0)).defined);
+    }
+    // Only three polls come before a phase (resample, deform, resample): the other stops were inside one.
+    CHECK(stops > 3);
+    CHECK(result.stepped);
+    CHECK(session.points().positions == reference.points().positions);
+    CHECK(session.points().normals == reference.points().normals);
+    CHECK(session.recording().steps().size() == reference.recording().steps().size());
+  }
+}
+
+TEST_CASE("a variant change stopped inside its resample keeps the new variant and the points as they were") {
+  EditSession<2> session(make_circle(1.0, 250, 0.024), 1);
+  const PointSet<2> before = session.points();
+  // The first poll comes before the resample, the second inside it.
+  std::atomic<int> polls{0};
+  const WorkControl stop_inside{[&] { return ++polls >= 2; }, {}};
+  const EditResult result = session.set_variant(Variant::interpolated, stop_inside);
+  CHECK(polls == 2);
+  CHECK(result.cancelled);
+  CHECK(result.changed);
+  CHECK(!result.has_stats);
+  CHECK(session.settings().variant == Variant::interpolated);
+  CHECK(session.points().positions == before.positions);
+  CHECK(session.points().normals == before.normals);
+  // Stopped before its resample, a change keeps the surface and its pool, and
+  // the check is off the pool again: work on it outside an edit (the
+  // pseudo-normals, for the 2D curve) runs through.
+  const WorkControl stop_at_once{[] { return true; }, {}};
+  CHECK(session.set_variant(Variant::exact, stop_at_once).cancelled);
+  CHECK(session.settings().variant == Variant::exact);
+  CHECK(session.evaluable_surface().evaluate(Vec<2>(1.0, 0.0)).defined);
+  CHECK(session.points().positions == before.positions);
+  CHECK(session.set_variant(Variant::interpolated, kRunAll).has_stats);
+  CHECK(session.points().positions != before.positions);
 }
 
 TEST_CASE("a step reports its phases: resample the loaded points, deform, resample") {

@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -95,7 +96,7 @@ TEST_CASE("a drag's moves coalesce: fewer steps than moves, ending at the newest
   CHECK(snapshot->recorded_steps == snapshot->steps);
 }
 
-TEST_CASE("a load cancels a running step between its phases, and the new shape replaces the old") {
+TEST_CASE("a load cancels a running step, and the new shape replaces the old") {
   EditorWorker worker;
   worker.post(heavy_sphere());
   worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
@@ -128,6 +129,56 @@ TEST_CASE("a parameter change cancels a running step; the state is as before the
   CHECK(snapshot->steps == 0);
 }
 
+TEST_CASE("a parameter change stops a step inside a phase; the state is as before the step, and the worker goes on") {
+  // Phases of the first step: 0 resamples the loaded points, 1 deforms them in
+  // place, 2 resamples the deformed points.
+  for (const int phase : {1, 2}) {
+    CAPTURE(phase);
+    EditorWorker* target = nullptr;
+    std::atomic<bool> armed{false};
+    std::atomic<int> polls_in_phase{0}, polls_after{0};
+    WorkerOptions options;  // one pool thread: the polls come in order
+    options.on_poll = [&] {
+      if (!armed) return;
+      const int running = target->status().phase;
+      if (running > phase) ++polls_after;
+      if (running != phase) return;
+      if (++polls_in_phase == 3) target->post(command::SetDeformation{MlsKind::similarity, 1.0});
+    };
+    EditorWorker worker(options);
+    target = &worker;
+    worker.post(command::LoadShape{3, 1.0, 4000, 0.06});
+    worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
+    REQUIRE(worker.wait_until_idle(kPatience));
+    const auto before = worker.snapshot();
+    armed = true;
+    drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 1);
+    REQUIRE(worker.wait_until_idle(kPatience));
+    armed = false;
+    // The third poll in the phase posted the change, which its own check then
+    // saw. The phase's first loop runs over thousands of points in sub-ranges
+    // of 1, 2, 4... points at first, so that poll is inside it; and nothing ran
+    // after it.
+    CHECK(polls_in_phase.load() == 3);
+    CHECK(polls_after.load() == 0);
+    const auto after = worker.snapshot();
+    CHECK(after->cancelled == 1);
+    CHECK(after->steps == 0);
+    CHECK(after->recorded_steps == 0);
+    CHECK(after->settings.kind == MlsKind::similarity);
+    CHECK(after->handles == before->handles);
+    CHECK(after->points.positions == before->points.positions);
+    CHECK(after->points.normals == before->points.normals);
+    // The worker goes on: the same drag now steps.
+    drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 1);
+    REQUIRE(worker.wait_until_idle(kPatience));
+    const auto stepped = worker.snapshot();
+    CHECK(stepped->steps == 1);
+    CHECK(stepped->handles[0].x() == doctest::Approx(0.3));
+    CHECK(stepped->points.positions != before->points.positions);
+  }
+}
+
 TEST_CASE("the worker shuts down cleanly while a step runs") {
   const auto begin = std::chrono::steady_clock::now();
   {
@@ -136,7 +187,7 @@ TEST_CASE("the worker shuts down cleanly while a step runs") {
     worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
     drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 5);
     REQUIRE(wait_for_phase(worker, "resampling", 0));
-  }  // the destructor stops the step at its next phase and joins
+  }  // the destructor stops the step inside its phase, puts the surface back and joins
   CHECK(std::chrono::steady_clock::now() - begin < kPatience);
 }
 

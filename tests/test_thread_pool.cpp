@@ -2,11 +2,38 @@
 
 #include <atomic>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/thread_pool.hpp"
 
 using namespace amls;
+
+namespace {
+
+// The sub-ranges [begin, end) each block was called with, in call order.
+using Calls = std::vector<std::vector<std::pair<std::size_t, std::size_t>>>;
+
+// Runs parallel_for over [0, n), recording every call; the body keeps no state between calls.
+Calls record_calls(ThreadPool& pool, std::size_t n) {
+  Calls calls(static_cast<std::size_t>(pool.threads()));
+  pool.parallel_for(
+      n, [&](std::size_t b, std::size_t e, int block) { calls[static_cast<std::size_t>(block)].emplace_back(b, e); });
+  return calls;
+}
+
+// Per-block output appended item by item and joined in block order, as the resampler does.
+std::vector<std::size_t> joined_squares(ThreadPool& pool, std::size_t n) {
+  std::vector<std::vector<std::size_t>> parts(static_cast<std::size_t>(pool.threads()));
+  pool.parallel_for(n, [&](std::size_t b, std::size_t e, int block) {
+    for (std::size_t i = b; i < e; ++i) parts[static_cast<std::size_t>(block)].push_back(i * i);
+  });
+  std::vector<std::size_t> out;
+  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
+  return out;
+}
+
+}  // namespace
 
 TEST_CASE("parallel_for covers every index exactly once, for any thread count") {
   for (int threads : {1, 2, 3, 8}) {
@@ -23,10 +50,131 @@ TEST_CASE("parallel_for covers every index exactly once, for any thread count") 
 
 TEST_CASE("parallel_for rethrows a block's exception and the pool stays usable") {
   ThreadPool pool(3);
-  CHECK_THROWS_AS(pool.parallel_for(100, [](std::size_t b, std::size_t, int) {
-    if (b > 0) throw std::runtime_error("boom");
-  }), std::runtime_error);
+  CHECK_THROWS_AS(pool.parallel_for(100,
+                                    [](std::size_t b, std::size_t, int) {
+                                      if (b > 0) throw std::runtime_error("boom");
+                                    }),
+                  std::runtime_error);
   std::atomic<int> sum{0};
   pool.parallel_for(10, [&](std::size_t b, std::size_t e, int) { sum += static_cast<int>(e - b); });
   CHECK(sum == 10);
+}
+
+TEST_CASE("under a cancellation check each block runs as consecutive sub-ranges covering it once, in order") {
+  const std::size_t n = 100000;
+  for (int threads : {1, 3}) {
+    ThreadPool pool(threads);
+    pool.set_cancel_check([] { return false; });
+    const Calls calls = record_calls(pool, n);
+    const auto blocks = static_cast<std::size_t>(threads);
+    for (std::size_t block = 0; block < blocks; ++block) {
+      const auto& ranges = calls[block];
+      REQUIRE(ranges.size() > 1);  // split: the first sub-range is a single item
+      CHECK(ranges.front().first == n * block / blocks);
+      CHECK(ranges.back().second == n * (block + 1) / blocks);
+      for (std::size_t k = 0; k < ranges.size(); ++k) {
+        CHECK(ranges[k].first < ranges[k].second);
+        if (k > 0) CHECK(ranges[k].first == ranges[k - 1].second);
+      }
+    }
+  }
+}
+
+TEST_CASE("sub-ranges change no result: per-block output joined in block order is the same for 1 and 3 threads") {
+  const std::size_t n = 50000;
+  ThreadPool one(1);
+  const std::vector<std::size_t> expected = joined_squares(one, n);  // one call, no check
+  REQUIRE(expected.size() == n);
+  for (int threads : {1, 3}) {
+    ThreadPool pool(threads);
+    CHECK(joined_squares(pool, n) == expected);
+    pool.set_cancel_check([] { return false; });
+    CHECK(joined_squares(pool, n) == expected);
+  }
+}
+
+TEST_CASE("a cancellation stops every block at its next sub-range and parallel_for throws Cancelled") {
+  const std::size_t n = 3000000;
+  const std::size_t trigger = 100;  // in block 0
+  for (int threads : {1, 3}) {
+    CAPTURE(threads);
+    ThreadPool pool(threads);
+    std::atomic<bool> stop{false};
+    pool.set_cancel_check([&] { return stop.load(); });
+    const auto blocks = static_cast<std::size_t>(threads);
+    // Each block is touched by one thread only.
+    std::vector<std::size_t> processed(blocks, 0), late_calls(blocks, 0);
+    // The other blocks start, then wait in their first item for the cancel, so
+    // that every block is under way when it comes and none can finish before
+    // it, whatever the scheduling.
+    std::atomic<std::size_t> started{0};
+    auto body = [&](std::size_t b, std::size_t e, int block) {
+      const auto k = static_cast<std::size_t>(block);
+      if (stop.load()) ++late_calls[k];
+      if (block > 0 && processed[k] == 0) {
+        ++started;
+        started.notify_all();
+        stop.wait(false);
+      }
+      for (std::size_t i = b; i < e; ++i) {
+        if (i == trigger) {
+          for (std::size_t s = started.load(); s < blocks - 1; s = started.load()) started.wait(s);
+          stop = true;
+          stop.notify_all();
+        }
+        ++processed[k];
+      }
+    };
+    CHECK_THROWS_AS(pool.parallel_for(n, body), Cancelled);
+    CHECK(processed[0] > trigger);
+    CHECK(processed[0] < n / blocks);
+    for (std::size_t k = 1; k < blocks; ++k) CHECK(processed[k] == 1);
+    for (std::size_t k = 0; k < blocks; ++k) CHECK(late_calls[k] == 0);
+
+    // The pool stays usable: the same check, no longer true, lets everything run.
+    stop = false;
+    std::atomic<std::size_t> total{0};
+    pool.parallel_for(n, [&](std::size_t b, std::size_t e, int) { total += e - b; });
+    CHECK(total == n);
+  }
+}
+
+TEST_CASE("a check already true stops before any work, even with one item or one thread") {
+  for (int threads : {1, 3}) {
+    ThreadPool pool(threads);
+    pool.set_cancel_check([] { return true; });
+    for (std::size_t n : {1u, 1000u}) {
+      std::atomic<int> calls{0};
+      CHECK_THROWS_AS(pool.parallel_for(n, [&](std::size_t, std::size_t, int) { ++calls; }), Cancelled);
+      CHECK(calls == 0);
+    }
+    pool.parallel_for(0, [](std::size_t, std::size_t, int) {});  // nothing to stop: no throw
+  }
+}
+
+TEST_CASE("a block's own exception wins over the cancel it caused") {
+  ThreadPool pool(3);
+  std::atomic<bool> stop{false};
+  pool.set_cancel_check([&] { return stop.load(); });
+  CHECK_THROWS_AS(pool.parallel_for(3000,
+                                    [&](std::size_t b, std::size_t, int block) {
+                                      if (block == 1 && b == 1000) {
+                                        stop = true;
+                                        throw std::runtime_error("boom");
+                                      }
+                                    }),
+                  std::runtime_error);
+}
+
+TEST_CASE("a CancelScope removes its check at the end: later loops run whole, one call per block") {
+  ThreadPool pool(3);
+  {
+    CancelScope scope(pool, [] { return true; });
+    CHECK_THROWS_AS(record_calls(pool, 300), Cancelled);
+  }
+  const Calls calls = record_calls(pool, 300);
+  for (std::size_t block = 0; block < 3; ++block) {
+    REQUIRE(calls[block].size() == 1);
+    CHECK(calls[block][0] == std::pair<std::size_t, std::size_t>(100 * block, 100 * (block + 1)));
+  }
 }

@@ -68,7 +68,7 @@ using Command =
                  command::Redo, command::Reset, command::Export, command::SaveScene>;
 
 // A load or a parameter change stops the step that is running (between its
-// phases), and so do Esc, undo, redo and reset.
+// phases or inside one), and so do Esc, undo, redo and reset.
 bool cancels_running_work(const Command& command);
 // Loads, Esc, undo, redo and reset make the handle moves still queued before
 // them pointless: those are dropped.

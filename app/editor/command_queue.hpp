@@ -7,7 +7,8 @@
 //   the newest position wins.
 // - Cancellation: a command for which cancels_running_work() holds bumps the
 //   cancel epoch; the worker notes the epoch when it pops a command and stops
-//   that command's work between phases once the epoch has moved on.
+//   that command's work, between its phases or inside one, once the epoch has
+//   moved on.
 // - A command for which supersedes_queued_moves() holds drops the moves still queued.
 #include <condition_variable>
 #include <cstdint>

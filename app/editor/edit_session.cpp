@@ -48,10 +48,23 @@ void add_stats(EditResult& result, const StepStats& stats) {
   if (stats.resample.vertices > 0) result.stats.resample = stats.resample;
 }
 
-// Runs the phases of one edit, reporting each and stopping between them when asked.
+// Runs the phases of one edit, reporting each and stopping when asked: between
+// phases, and inside one through the pool the phases run their loops on.
 class Phases {
  public:
   Phases(const WorkControl& control, int count) : control_(control), count_(count) {}
+  // Runs `work`, which calls next() before each phase and returns false if it
+  // said stop, with the control's check on `pool`; false if the edit stopped.
+  // The check is off the pool again afterwards, whatever happened.
+  template <typename Work>
+  bool run(ThreadPool& pool, Work&& work) {
+    CancelScope scope(pool, control_.cancelled);
+    try {
+      return work();
+    } catch (const Cancelled&) {
+      return false;
+    }
+  }
   // False if the edit must stop before this phase.
   bool next(const char* name) {
     if (control_.cancelled && control_.cancelled()) return false;
@@ -59,6 +72,8 @@ class Phases {
     ++index_;
     return true;
   }
+  // Whether a phase began: only then can the surface have changed.
+  bool started() const { return index_ > 0; }
 
  private:
   const WorkControl& control_;
@@ -121,6 +136,20 @@ void EditSession<D>::push_undo() {
 }
 
 template <int D>
+void EditSession<D>::roll_back(PointSet<D> before) {
+  // A phase stopped midway leaves the surface half-updated: points deformed in
+  // place, pseudo-normals, the resampler's field. set_points replaces the points
+  // and their hash and marks the pseudo-normals stale; the field is rebuilt by
+  // the next Update_Function (Resampler::resample refuses one an interrupted
+  // update left). The points are in the surface's cell order already, which
+  // hashing keeps: the state is as if the edit never ran. The surface itself is
+  // kept, warm: a fresh one would make the next step seconds slower at a
+  // million points.
+  surface_->set_points(std::move(before));
+  normals_version_ = ~std::uint64_t{0};
+}
+
+template <int D>
 const AmlsSurface<D>& EditSession<D>::evaluable_surface() {
   if (normals_version_ != version_) {
     surface_->refresh_normals();
@@ -176,23 +205,24 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
   const bool resample_first = resample && !resampled_;
   Phases phases(control, (resample_first ? 1 : 0) + 1 + (resample ? 1 : 0));
   PointSet<D> before = surface_->points();
-  // Stopping puts the points back as they were before the edit (set_points
-  // rehashes them into the same order), so the state is as if it never ran.
-  auto stop = [&] {
-    if (result.has_stats) surface_->set_points(std::move(before));
+  const bool finished = phases.run(surface_->pool(), [&] {
+    if (resample_first) {
+      if (!phases.next("resampling")) return false;
+      add_stats(result, surface_->resample_only());
+    }
+    if (!phases.next("deforming")) return false;
+    add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
+    if (resample) {
+      if (!phases.next("resampling")) return false;
+      add_stats(result, surface_->resample_only());
+    }
+    return true;
+  });
+  if (!finished) {
+    if (phases.started()) roll_back(std::move(before));
     result = EditResult{};
     result.cancelled = true;
     return result;
-  };
-  if (resample_first) {
-    if (!phases.next("resampling")) return stop();
-    add_stats(result, surface_->resample_only());
-  }
-  if (!phases.next("deforming")) return stop();
-  add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
-  if (resample) {
-    if (!phases.next("resampling")) return stop();
-    add_stats(result, surface_->resample_only());
   }
   if (resample_first) recording_.resampled(settings_);
   recording_.deformed(handles_, to, settings_);
@@ -208,9 +238,19 @@ template <int D>
 EditResult EditSession<D>::resample_now(const WorkControl& control) {
   EditResult result;
   result.changed = true;
+  if (surface_->points().empty()) return result;
   Phases phases(control, 1);
-  if (surface_->points().empty() || !phases.next("resampling")) return result;
-  add_stats(result, surface_->resample_only());
+  PointSet<D> before = surface_->points();
+  const bool finished = phases.run(surface_->pool(), [&] {
+    if (!phases.next("resampling")) return false;
+    add_stats(result, surface_->resample_only());
+    return true;
+  });
+  if (!finished) {
+    if (phases.started()) roll_back(std::move(before));
+    result.cancelled = true;
+    return result;
+  }
   recording_.resampled(settings_);
   resampled_ = true;
   ++version_;

@@ -20,13 +20,19 @@ namespace amls::editor {
 
 // How an edit reports its phases and learns that it should stop.
 struct WorkControl {
-  std::function<bool()> cancelled;                                     // polled before each phase
+  // Polled before each phase and, through the surface's thread pool, about
+  // every millisecond inside one: from every pool thread at once, so it must be
+  // thread-safe.
+  std::function<bool()> cancelled;
   std::function<void(const char* phase, int index, int count)> phase;  // the phase about to run
 };
 
 struct EditResult {
-  bool changed = false;    // the point set or the handles changed
-  bool cancelled = false;  // stopped between phases: the state is as before the edit
+  bool changed = false;  // the point set, the handles or a parameter changed
+  // Stopped, between phases or inside one. The point set is as before the edit;
+  // so is everything else for a handle move, while a variant or grid change
+  // keeps its new value, unresampled.
+  bool cancelled = false;
   bool stepped = false;    // a deformation step was taken
   bool has_stats = false;  // the surface did work, summed in `stats`
   StepStats stats;
@@ -98,6 +104,8 @@ class EditSession {
   State current_state() const;
   void restore(const State& state);
   void push_undo();
+  // After a stopped edit: the surface holds `before` again.
+  void roll_back(PointSet<D> before);
   // Undo and redo: the state now goes onto `to`, the newest of `from` comes back.
   bool travel(std::deque<State>& from, std::deque<State>& to);
   EditResult resample_now(const WorkControl& control);

@@ -149,7 +149,10 @@ void EditorWorker::note_result(const EditResult& result) {
 
 void EditorWorker::execute(const QueuedCommand& queued) {
   const std::uint64_t epoch = queued.epoch;
-  const WorkControl control{[this, epoch] { return queue_.cancel_epoch() != epoch; },
+  const WorkControl control{[this, epoch] {
+                              if (options_.on_poll) options_.on_poll();
+                              return queue_.cancel_epoch() != epoch;
+                            },
                             [this](const char* name, int index, int count) { set_phase(name, index, count); }};
   // Runs `edit(session)` on the session of either dimension; false if there is none.
   auto with_session = [&](auto&& edit) {

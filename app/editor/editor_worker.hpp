@@ -28,12 +28,17 @@ struct WorkerOptions {
   double curve_interval = 0.1;
   // Called on the worker thread after each snapshot or message (e.g. to wake the UI's event loop).
   std::function<void()> on_publish;
+  // For tests: called each time running work asks whether it should stop
+  // (before each phase, and about every millisecond inside one, on the pool's
+  // threads), just before it asks. Lets a test post a command at a known point.
+  std::function<void()> on_poll;
 };
 
 class EditorWorker {
  public:
   explicit EditorWorker(WorkerOptions options = {});
-  // Closes the queue, stops running work at its next phase and joins the thread.
+  // Closes the queue, stops running work (within about a millisecond of the
+  // phase's work), puts its surface back and joins the thread.
   ~EditorWorker();
   EditorWorker(const EditorWorker&) = delete;
   EditorWorker& operator=(const EditorWorker&) = delete;

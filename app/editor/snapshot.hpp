@@ -33,7 +33,7 @@ struct Snapshot {
   StepStats last;
   PhaseTimings total;
   std::size_t steps = 0;          // deformation steps since the load
-  std::size_t cancelled = 0;      // edits stopped between phases since the worker started
+  std::size_t cancelled = 0;      // edits stopped (between or inside phases) since the worker started
   double steps_per_second = 0.0;  // over the last second of steps
 
   bool can_undo = false;
