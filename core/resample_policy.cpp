@@ -110,7 +110,8 @@ double gap2_above(std::vector<Neighbour>& neighbours, std::vector<double>& dista
     }
     return std::max({plus, minus, largest});
   } else {
-    std::sort(neighbours.begin(), neighbours.end(), [](const Neighbour& a, const Neighbour& b) { return a.order < b.order; });
+    std::sort(neighbours.begin(), neighbours.end(),
+              [](const Neighbour& a, const Neighbour& b) { return a.order < b.order; });
     if (surrounded_within(neighbours, largest)) return largest;
     if (!surrounded_within(neighbours, kInfinity)) return kInfinity;
     // More neighbours only narrow the empty sectors: bisect over the distances.

@@ -7,10 +7,10 @@
 //
 // - gap <= max_gap = 2.5: every point is surrounded by neighbours of its own
 //   sheet within 2.5 h. Right after a resample (and one step of deformation)
-//   the largest gap is 2.2 h on the vortex; beyond that the surface is
-//   stretching apart there. Unlike nearest-neighbour spacing, the gap sees a
-//   hole: a point at a hole's rim keeps a close neighbour on its other side,
-//   but not on the hole's side.
+//   the largest gap is 2.2 h on the vortex and on Enright's test; beyond that
+//   the surface is stretching apart there. Unlike nearest-neighbour spacing,
+//   the gap sees a hole: a point at a hole's rim keeps a close neighbour on
+//   its other side, but not on the hole's side.
 // - feature_size >= min_feature_size = 1.4: no two nearby points of one sheet
 //   turn their normals faster than a circle of radius 1.4 h does. The grid
 //   walk cannot place crossings on a tip or fold much sharper than h: where the
@@ -23,6 +23,10 @@
 //
 // Crowding has no bound: between resamples the point count cannot grow, and
 // crowded points define the same surface; the next resample thins them.
+//
+// Cost: one neighbour pass within 2.5 h, about a tenth of a resample (0.3 ms
+// against 2.5 ms per step on the 256² vortex, 9 ms against 92 ms on Enright
+// 128³, one thread).
 #include <cstddef>
 #include <string>
 

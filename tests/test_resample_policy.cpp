@@ -52,7 +52,8 @@ TEST_CASE("resample policies parse, print, and reject bad forms with a message")
   CHECK(every.every == 5);
   CHECK(every.to_string() == "every:5");
   for (const char* bad : {"sometimes", "every:", "every:0", "every:3x", "every:-2"})
-    CHECK_THROWS_WITH_AS(ResamplePolicy::parse(bad), doctest::Contains("always, auto or every:K"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(ResamplePolicy::parse(bad), doctest::Contains("always, auto or every:K"),
+                         std::invalid_argument);
 }
 
 TEST_CASE("sampling quality of circles: the gap is the spacing, the feature size the radius") {
@@ -137,7 +138,8 @@ TEST_CASE("sampling quality of spheres: in band when even, out with a hole, a st
   SUBCASE("a hole: the points within 3 h of the north pole removed") {
     PointSet<3> holed;
     for (std::size_t i = 0; i < sphere.size(); ++i)
-      if ((sphere.positions[i] - Vec<3>(0.5, 0.5, 0.7)).norm() > 0.03) holed.add(sphere.positions[i], sphere.normals[i]);
+      if ((sphere.positions[i] - Vec<3>(0.5, 0.5, 0.7)).norm() > 0.03)
+        holed.add(sphere.positions[i], sphere.normals[i]);
     CHECK(quality_of(holed).gap == std::numeric_limits<double>::infinity());
     CHECK(out_of_band(holed));
   }
@@ -147,7 +149,8 @@ TEST_CASE("sampling quality of spheres: in band when even, out with a hole, a st
       const Vec<3> d = sphere.positions[i] - Vec<3>(0.5, 0.5, 0.5);
       const Vec<3> n = sphere.normals[i];
       // Positions x -> 4x; normals by the inverse transpose.
-      stretched.add(Vec<3>(0.5 + 4.0 * d.x(), 0.5 + d.y(), 0.5 + d.z()), Vec<3>(n.x() / 4.0, n.y(), n.z()).normalized());
+      stretched.add(Vec<3>(0.5 + 4.0 * d.x(), 0.5 + d.y(), 0.5 + d.z()),
+                    Vec<3>(n.x() / 4.0, n.y(), n.z()).normalized());
     }
     const SamplingQuality s = quality_of(stretched);
     CHECK(s.gap > 2.5);
