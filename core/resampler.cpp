@@ -25,6 +25,9 @@ constexpr std::uint8_t kPositive = 4;  // F >= 0 (a zero counts as positive)
 constexpr std::int64_t kWalkLow = -1;
 constexpr std::int64_t kWalkHigh = 2;
 
+// Points between two cancellation polls in a serial loop (well under a millisecond).
+constexpr std::size_t kPollInterval = 4096;
+
 // Corner v of the unit cube: bit a of v is the offset along axis a.
 template <int D>
 IVec<D> corner_offset(int v) {
@@ -62,8 +65,11 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   IVec<D> previous_cell = IVec<D>::Constant(std::numeric_limits<std::int64_t>::min());
   IVec<D> block_base = previous_cell;
   typename VertexField<D>::Block bricks_around;
-  for (const Vec<D>& p : surface.points().positions) {
-    const IVec<D> cell = grid.cell_of(p);
+  const std::vector<Vec<D>>& positions = surface.points().positions;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    // The one serial pass here: a cancel must not wait for it on a large surface.
+    if (i % kPollInterval == 0) pool.poll_cancel();
+    const IVec<D> cell = grid.cell_of(positions[i]);
     if (cell == previous_cell) continue;
     previous_cell = cell;
     const IVec<D> lo = cell.array() + kWalkLow;

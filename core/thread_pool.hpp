@@ -53,6 +53,11 @@ class ThreadPool {
   // exception wins). What the body wrote until then stays written.
   void parallel_for(std::size_t n, const Body& body);
 
+  // For serial loops of the pool's owner: throws Cancelled if the check says
+  // stop (call it every few thousand items).
+  void poll_cancel() const {
+    if (check_ && check_()) throw Cancelled();
+  }
   // Installs the check polled by parallel_for (an empty one removes it). Not
   // while a parallel_for runs.
   void set_cancel_check(CancelCheck check) { check_ = std::move(check); }

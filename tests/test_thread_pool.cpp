@@ -178,3 +178,15 @@ TEST_CASE("a CancelScope removes its check at the end: later loops run whole, on
     CHECK(calls[block][0] == std::pair<std::size_t, std::size_t>(100 * block, 100 * (block + 1)));
   }
 }
+
+TEST_CASE("poll_cancel throws Cancelled only while a check says stop") {
+  ThreadPool pool(1);
+  CHECK_NOTHROW(pool.poll_cancel());
+  bool stop = false;
+  pool.set_cancel_check([&] { return stop; });
+  CHECK_NOTHROW(pool.poll_cancel());
+  stop = true;
+  CHECK_THROWS_AS(pool.poll_cancel(), Cancelled);
+  pool.set_cancel_check({});
+  CHECK_NOTHROW(pool.poll_cancel());
+}
