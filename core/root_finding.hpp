@@ -98,6 +98,12 @@ RootResult find_root(G&& g, double a, double b, double ga, double gb, const Root
     }
     // A step this short means t is already that close to the root.
     if (std::abs(next - t) <= 0.5 * options.tolerance) return {true, t, r.evaluations};
+    // Secant steps shrink superlinearly near a simple root: the error left
+    // after a step is about step^2 / previous step. When that is below the
+    // tolerance, the step's end is the root and needs no evaluation.
+    if (have_previous && next > std::min(a, b) && next < std::max(a, b) &&
+        (next - t) * (next - t) <= options.tolerance * std::abs(t - previous_t))
+      return {true, next, r.evaluations};
     previous_t = t;
     previous_g = gt;
     have_previous = true;

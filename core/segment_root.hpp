@@ -18,6 +18,9 @@ namespace amls {
 // Roots are located to this fraction of the segment: near machine precision
 // for coordinates of order one on grids up to a few thousand cells.
 inline constexpr double kSegmentRootTolerance = 1e-12;
+// An evaluation this close to the root (in units of the segment) gives the new
+// point's normal; the fitted gradient changes by about as little over it.
+inline constexpr double kNormalReach = 1e-6;
 
 template <int D>
 struct SegmentRoot {
@@ -101,7 +104,9 @@ SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, con
   out.evaluations = root.evaluations;
   out.fallback = !root.ok;
   out.t = root.ok ? root.t : linear_t;
-  out.normal = root.ok && root.t == best_t && best.gradient.squaredNorm() > 0.0
+  // The normal of the evaluation nearest the root, if it is that near (the
+  // root finder may stop on an extrapolated step it did not evaluate).
+  out.normal = root.ok && std::abs(root.t - best_t) <= kNormalReach && best.gradient.squaredNorm() > 0.0
                    ? oriented_unit_normal<D>(best.gradient, best.mean_normal, fallback_axis)
                    : interpolated_normal(f0, f1, out.t, fallback_axis);
   return out;

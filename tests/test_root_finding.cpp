@@ -83,3 +83,19 @@ TEST_CASE("find_root stops early at a jump that is not a zero and says so") {
   auto steep = [](double t) -> std::optional<RootSample> { return RootSample{std::tanh(200.0 * (t - 0.3141))}; };
   CHECK_FALSE(find_root(steep, 0.0, 1.0, std::tanh(-200.0 * 0.3141), std::tanh(200.0 * 0.6859), tolerance(1e-12)).jump);
 }
+
+TEST_CASE("find_root ends on a secant step it need not evaluate when convergence shows it is within tolerance") {
+  const double root = std::cbrt(0.2);
+  int calls = 0;
+  auto g = [&](double t) -> std::optional<RootSample> {
+    ++calls;
+    return RootSample{t * t * t - 0.2, 3.0 * t * t};
+  };
+  RootOptions options = tolerance(1e-12);
+  options.first_guess = root + 1e-4;
+  const RootResult r = find_root(g, 0.0, 1.0, -0.2, 0.8, options);
+  REQUIRE(r.ok);
+  CHECK(r.evaluations == calls);
+  CHECK(std::abs(r.t - root) < 1e-12);
+  CHECK(r.evaluations <= 3);
+}
