@@ -77,16 +77,21 @@ bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
     llt.compute(a_ + Matrix::Identity() * (kRegularization * a_.trace() / kBasis));
   if (llt.info() != Eigen::Success) return false;
   Coeffs x = start.normalized();
+  double previous_step = 0.0;
   for (int it = 0; it < kMaxInverseIterations; ++it) {
     const Coeffs y = llt.solve(apply_constraint<kBasis>(x));
     const double n = y.norm();
     if (!std::isfinite(n) || n == 0.0) return false;
     // The iterates keep their sign once the direction has settled (the
-    // eigenvalue is positive), so a vanishing step means convergence.
+    // eigenvalue is positive), so a vanishing step means convergence. The
+    // convergence is linear, so the error left is about step^2 / previous step:
+    // stopping on that saves the last iteration.
     const Coeffs next = y / n;
-    const double step = (next - x).squaredNorm();
+    const double step = (next - x).norm();
     x = next;
-    if (step > kConverged * kConverged) continue;
+    const bool converged = step <= kConverged || (it > 0 && step * step <= kConverged * previous_step);
+    previous_step = step;
+    if (!converged) continue;
     const double xcx = x.dot(apply_constraint<kBasis>(x));
     if (!(xcx > 0.0)) return false;
     alpha_ = x / std::sqrt(xcx);
