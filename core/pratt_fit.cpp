@@ -76,10 +76,16 @@ bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
   if (llt.info() != Eigen::Success)
     llt.compute(a_ + Matrix::Identity() * (kRegularization * a_.trace() / kBasis));
   if (llt.info() != Eigen::Success) return false;
+  // A^-1 C once (one triangular solve with kBasis right-hand sides): each
+  // iteration is then a small matrix-vector product.
+  Matrix c = Matrix::Identity();
+  c(0, 0) = c(kBasis - 1, kBasis - 1) = 0.0;
+  c(0, kBasis - 1) = c(kBasis - 1, 0) = -2.0;
+  const Matrix step_matrix = llt.solve(c);
   Coeffs x = start.normalized();
   double previous_step = 0.0;
   for (int it = 0; it < kMaxInverseIterations; ++it) {
-    const Coeffs y = llt.solve(apply_constraint<kBasis>(x));
+    const Coeffs y = step_matrix * x;
     const double n = y.norm();
     if (!std::isfinite(n) || n == 0.0) return false;
     // The iterates keep their sign once the direction has settled (the
