@@ -244,6 +244,28 @@ TEST_CASE("Save Scene writes the session's steps as a scene whose start reads ba
   CHECK(start.handles.at(0).x() == 1.0);
 }
 
+TEST_CASE("the resample switch reaches the session; the snapshot counts the resamples and says how to replay") {
+  EditorWorker worker;
+  worker.post(circle());
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  worker.post(command::SetResampling{true, ResamplePolicy::parse("every:2")});
+  drag(worker, {Vec<3>(1, 0, 0)}, 0, 0.2, 5);
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const std::shared_ptr<const Snapshot> s = worker.snapshot();
+  CHECK(s->settings.resample);
+  CHECK(s->settings.policy.to_string() == "every:2");
+  REQUIRE(s->steps >= 1);
+  // The loaded points before step 0, then after every second step (the next one is 2, 4, ...).
+  CHECK(s->resamples == 1 + s->steps / 2);
+  CHECK(s->replay_arguments == "--resample every:2");
+  CHECK(s->replay_note.empty());
+
+  worker.post(command::SetResampling{true, ResamplePolicy{ResamplePolicy::Kind::every, 0}});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(has_message(worker.take_messages(), Message::Level::error, "K >= 1"));
+  CHECK(worker.snapshot()->settings.policy.to_string() == "every:2");
+}
+
 TEST_CASE("a torus or a rounded box loaded from a scene is saved back as the same shape, not as points") {
   amls::test::TempDir dir;
   const std::pair<const char*, const char*> shapes[] = {
