@@ -102,7 +102,7 @@ void add_deform_command(CLI::App& app) {
   CLI::Option* resample = add_resample_option(*cmd, options->resample);
   cmd->add_flag("--no-resample", options->no_resample,
                 "deform the initial points without resampling (the point set thins out and the surface breaks; the "
-                "report says at which step); cannot be given with --resample")
+                "report says at which step)")
       ->excludes(resample);
   add_threads_option(*cmd, options->threads);
   cmd->add_option("--tracers", options->tracers_per_point,

@@ -88,27 +88,25 @@ void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& ac
 }
 
 // Resampling on or off, and when: after every step, when the sampling
-// quality leaves its band (auto), or every K-th step.
+// quality leaves its band (auto), or every K-th step. One combo, so that "off"
+// cannot be combined with a policy it ignores.
 void resampling_switch(UiState& ui, const PanelActions& actions) {
   ResamplePolicy& policy = ui.edit.policy;
-  bool changed = ImGui::Checkbox("resample", &ui.edit.resample);
-  ImGui::BeginDisabled(!ui.edit.resample);
-  int kind = static_cast<int>(policy.kind);
-  ImGui::SameLine();
-  changed = ImGui::RadioButton("always", &kind, static_cast<int>(ResamplePolicy::Kind::always)) || changed;
-  ImGui::SameLine();
-  changed = ImGui::RadioButton("auto", &kind, static_cast<int>(ResamplePolicy::Kind::automatic)) || changed;
-  ImGui::SameLine();
-  changed = ImGui::RadioButton("every", &kind, static_cast<int>(ResamplePolicy::Kind::every)) || changed;
-  policy.kind = static_cast<ResamplePolicy::Kind>(kind);
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 3.0f);
-  ImGui::BeginDisabled(policy.kind != ResamplePolicy::Kind::every);
-  ImGui::InputInt("steps##every", &policy.every, 0);
-  policy.every = std::max(1, policy.every);
-  changed = ImGui::IsItemDeactivatedAfterEdit() || changed;
-  ImGui::EndDisabled();
-  ImGui::EndDisabled();
+  // The combo's entries in the order of ResamplePolicy::Kind, then off.
+  static const char* kWhen[] = {"always", "auto", "every K steps", "off"};
+  constexpr int kOff = 3;
+  int when = ui.edit.resample ? static_cast<int>(policy.kind) : kOff;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+  bool changed = ImGui::Combo("resample", &when, kWhen, 4);
+  ui.edit.resample = when != kOff;
+  if (ui.edit.resample) policy.kind = static_cast<ResamplePolicy::Kind>(when);
+  if (ui.edit.resample && policy.kind == ResamplePolicy::Kind::every) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 3.0f);
+    ImGui::InputInt("K", &policy.every, 0);
+    policy.every = std::max(1, policy.every);
+    changed = ImGui::IsItemDeactivatedAfterEdit() || changed;
+  }
   if (changed) actions.post(command::SetResampling{ui.edit.resample, policy});
   if (!ui.edit.resample)
     ImGui::TextColored(kWarning, "off: the points spread and S(P) breaks");
