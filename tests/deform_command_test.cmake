@@ -2,24 +2,13 @@
 #   cmake -DAMLS=<amls> -DSCENE=<clover2d.json> -DWORK_DIR=<dir> -P deform_command_test.cmake
 # A short run under `auto` reports its policy and resamples, per step too; bad
 # values and --no-resample with --resample fail before any work, naming the option.
+include("${CMAKE_CURRENT_LIST_DIR}/amls_command_checks.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
 # Runs amls deform with `args`; it must fail with `expected` in its message and write no report.
 function(deform_fails expected)
-  set(report "${WORK_DIR}/bad.json")
-  execute_process(COMMAND "${AMLS}" deform "${SCENE}" ${ARGN} --json "${report}" RESULT_VARIABLE code
-                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(code EQUAL 0)
-    message(FATAL_ERROR "amls deform ${ARGN} succeeded but should have failed")
-  endif()
-  string(FIND "${out}${err}" "${expected}" found)
-  if(found EQUAL -1)
-    message(FATAL_ERROR "amls deform ${ARGN}: expected '${expected}' in the message, got:\n${out}${err}")
-  endif()
-  if(EXISTS "${report}")
-    message(FATAL_ERROR "amls deform ${ARGN} failed but wrote ${report}")
-  endif()
+  amls_fails("${expected}" "${WORK_DIR}/bad.json" deform "${SCENE}" ${ARGN} --json "${WORK_DIR}/bad.json")
 endfunction()
 
 # Fails unless `actual` equals `expected`.
