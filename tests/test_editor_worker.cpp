@@ -244,7 +244,7 @@ TEST_CASE("Save Scene writes the session's steps as a scene whose start reads ba
   CHECK(start.handles.at(0).x() == 1.0);
 }
 
-TEST_CASE("the resample switch reaches the session; the snapshot counts the resamples and says how to replay") {
+TEST_CASE("the resample switch reaches the session, whose snapshot counts the resamples and says how to replay") {
   EditorWorker worker;
   worker.post(circle());
   worker.post(command::AddHandle{Vec<3>(1, 0, 0)});

@@ -97,7 +97,7 @@ TEST_CASE("under auto a step the policy left unresampled replays exactly, with t
   CHECK(r.inexact_reason().find("resample policy changed") != std::string::npos);
 }
 
-TEST_CASE("replay arguments: none under always, --no-resample without resampling; switching it off spoils") {
+TEST_CASE("replay arguments: none under always, --no-resample without resampling, and switching it off spoils") {
   SurfaceSettings s;
   SessionRecording<2> always(circle_source(), s);
   editor_step(always, {{1, 0}}, {{1.1, 0}}, s, true);
