@@ -55,7 +55,7 @@ TEST_CASE("dragging one handle of two stretches the circle towards it and keeps 
   CHECK(session.points().size() > 250);
 }
 
-TEST_CASE("undo restores the point set and handles of the drag's start exactly; redo its end") {
+TEST_CASE("undo restores the point set and handles of the drag's start exactly - redo its end") {
   EditSession<2> session = circle_with_two_handles();
   drag_right_handle(session, 1.3, 3);
   const PointSet<2> before = session.points();
@@ -217,7 +217,7 @@ TEST_CASE("handles: removing and adding are undoable, a bad index is refused") {
   CHECK_THROWS_AS(session.move_handles(wrong, kRunAll), std::invalid_argument);
 }
 
-TEST_CASE("a grid change resamples at the new spacing; reset goes back to the initial shape") {
+TEST_CASE("a grid change resamples at the new spacing - reset goes back to the initial shape") {
   EditSession<2> session = circle_with_two_handles();
   drag_right_handle(session, 1.3, 2);
   session.set_grid(0.012, 3.0, kRunAll);

@@ -111,7 +111,7 @@ TEST_CASE("a load cancels a running step, and the new shape replaces the old") {
   CHECK(snapshot->steps == 0);
 }
 
-TEST_CASE("a parameter change cancels a running step; the state is as before the step, then changed") {
+TEST_CASE("a parameter change cancels a running step - the state is as before the step, then changed") {
   EditorWorker worker;
   worker.post(heavy_sphere());
   worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
@@ -129,7 +129,7 @@ TEST_CASE("a parameter change cancels a running step; the state is as before the
   CHECK(snapshot->steps == 0);
 }
 
-TEST_CASE("a parameter change stops a step inside a phase; the state is as before the step, and the worker goes on") {
+TEST_CASE("a parameter change stops a step inside a phase - the state is as before the step, and the worker goes on") {
   // Phases of the first step: 0 resamples the loaded points, 1 deforms them in
   // place, 2 resamples the deformed points.
   for (const int phase : {1, 2}) {
@@ -191,7 +191,7 @@ TEST_CASE("the worker shuts down cleanly while a step runs") {
   CHECK(std::chrono::steady_clock::now() - begin < kPatience);
 }
 
-TEST_CASE("export writes the current point set; a failed export leaves the previous file intact") {
+TEST_CASE("export writes the current point set - a failed export leaves the previous file intact") {
   amls::test::TempDir dir;
   const std::string out = dir.file("out.ply");
   EditorWorker worker;

@@ -27,7 +27,7 @@ void editor_step(SessionRecording<2>& r, const Handles& from, const Handles& to,
 
 }  // namespace
 
-TEST_CASE("steps that continue each other share a stage; a changed handle set starts one") {
+TEST_CASE("steps that continue each other share a stage - a changed handle set starts one") {
   SessionRecording<2> r(circle_source(), {});
   const SurfaceSettings s;
   const Handles a{{1, 0}}, b{{1.1, 0}}, c{{1.2, 0}};
@@ -48,7 +48,7 @@ TEST_CASE("steps that continue each other share a stage; a changed handle set st
   CHECK(r.exact());
 }
 
-TEST_CASE("settings changed before the first step are the scene's; after it they spoil an exact replay") {
+TEST_CASE("settings changed before the first step are the scene's - after it they spoil an exact replay") {
   SurfaceSettings s;
   SessionRecording<2> r(circle_source(), s);
   s.variant = Variant::interpolated;
@@ -65,7 +65,7 @@ TEST_CASE("settings changed before the first step are the scene's; after it they
   CHECK(r.inexact_reason().find("twice") != std::string::npos);
 }
 
-TEST_CASE("a session without resampling is replayed with --no-resample; switching it on spoils that") {
+TEST_CASE("a session without resampling is replayed with --no-resample - switching it on spoils that") {
   SurfaceSettings s;
   s.resample = false;
   SessionRecording<2> r(circle_source(), s);
