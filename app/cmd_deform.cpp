@@ -26,6 +26,7 @@ struct DeformOptions {
   std::string out_dir;
   std::size_t frames_every = 1;
   std::string format = "ply";
+  std::string resample = "always";
   bool no_resample = false;
   int threads = 1;
   double tracers_per_point = 50.0;
@@ -41,9 +42,10 @@ std::string frame_name(std::size_t step, std::size_t steps, const std::string& f
 }
 
 template <int D>
-void run(const Scene<D>& scene, const DeformOptions& options) {
+void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePolicy& policy) {
   SceneRunOptions run_options;
   run_options.resample = !options.no_resample;
+  run_options.policy = policy;
   run_options.threads = options.threads;
   run_options.tracers_per_point = options.tracers_per_point;
   run_options.max_steps = options.max_steps;
@@ -85,7 +87,8 @@ void add_deform_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "deform",
       "run a scene (docs/scene-format.md): deform its shape through its handle stages with MLS deformation, "
-      "resampling after every step, and report the sampling quality and the distance to the exact deformed shape");
+      "resampling after every step (or as --resample says), and report the sampling quality and the distance to "
+      "the exact deformed shape");
   cmd->add_option("scene", options->scene, "scene file (.json)")->required();
   cmd->add_option("--out-dir", options->out_dir,
                   "write frames (frame_00000.ply, ...), the exact deformed shape's tracers (exact.ply) and report.json here; they go to DIR.partial first, which is "
@@ -96,9 +99,11 @@ void add_deform_command(CLI::App& app) {
   cmd->add_option("--format", options->format, "frame format: ply (binary) or xyz")
       ->check(CLI::IsMember({"ply", "xyz"}))
       ->capture_default_str();
+  CLI::Option* resample = add_resample_option(*cmd, options->resample);
   cmd->add_flag("--no-resample", options->no_resample,
                 "deform the initial points without resampling (the point set thins out and the surface breaks; the "
-                "report says at which step)");
+                "report says at which step)")
+      ->excludes(resample);
   add_threads_option(*cmd, options->threads);
   cmd->add_option("--tracers", options->tracers_per_point,
                   "tracer points per initial point, standing for the exact deformed shape")
@@ -107,11 +112,12 @@ void add_deform_command(CLI::App& app) {
   cmd->add_option("--max-steps", options->max_steps, "stop after this many steps (0: all)")->capture_default_str();
   cmd->add_option("--json", options->json_path, "also write the JSON report to this file");
   cmd->callback([options] {
+    const ResamplePolicy policy = ResamplePolicy::parse(options->resample);
     const AnyScene scene = read_scene(options->scene);
     if (const Scene<2>* s2 = std::get_if<Scene<2>>(&scene)) {
-      run<2>(*s2, *options);
+      run<2>(*s2, *options, policy);
     } else {
-      run<3>(std::get<Scene<3>>(scene), *options);
+      run<3>(std::get<Scene<3>>(scene), *options, policy);
     }
   });
 }

@@ -34,11 +34,7 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   add_variant_option(*cmd, options->variant, true);
   add_flow_test_options(*cmd, options->config);
   add_threads_option(*cmd, options->config.threads);
-  cmd->add_option("--resample", options->resample,
-                  "when to resample: always (every dt, as the paper), auto (when a point is not surrounded by "
-                  "neighbours of its sheet within 2.5 h, or normals turn faster than on a circle of radius 1.4 h) "
-                  "or every:K")
-      ->capture_default_str();
+  add_resample_option(*cmd, options->resample);
   cmd->add_option("--json", options->json_path, "write the JSON report to this file");
   cmd->add_option("--out", options->out_path, "write the final point set to this file (.ply or .xyz)");
   cmd->callback([options, runner] {

@@ -45,4 +45,13 @@ void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config) {
       ->capture_default_str();
 }
 
+CLI::Option* add_resample_option(CLI::App& cmd, std::string& policy) {
+  return cmd
+      .add_option("--resample", policy,
+                  "when to resample: always (after every step, as the paper), auto (when a point is not surrounded "
+                  "by neighbours of its sheet within 2.5 h, or normals turn faster than on a circle of radius "
+                  "1.4 h) or every:K (steps 0, K, 2K, ...)")
+      ->capture_default_str();
+}
+
 }  // namespace amls::app

@@ -29,7 +29,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
   j["radius_factor"] = r.radius_factor;
   j["variant"] = to_string(r.variant);
   j["deformation"] = {{"kind", to_string(r.kind)}, {"alpha", r.alpha}};
-  j["resample"] = r.resample;
+  j["resample"] = r.resample ? r.policy.to_string() : "off";
+  j["resamples"] = r.resamples;
   j["threads"] = r.threads;
   j["stages"] = r.stages;
   j["steps"] = r.steps;
@@ -58,6 +59,7 @@ nlohmann::json to_json(const SceneRunReport& r) {
   nlohmann::json timings = timings_json(r.timings);
   timings["tracers"] = r.tracer_seconds;
   timings["measure"] = r.measure_seconds;
+  timings["quality"] = r.quality_seconds;
   timings["wall"] = r.wall_seconds;
   j["timings_s"] = timings;
   j["affine_fallbacks"] = r.affine_fallbacks;
@@ -67,6 +69,7 @@ nlohmann::json to_json(const SceneRunReport& r) {
     nlohmann::json step = {{"step", s.step},
                            {"stage", s.stage},
                            {"points", s.points},
+                           {"resampled", s.resampled},
                            {"spacing_h", spacing_json(s.spacing_h)},
                            {"spacing_below_0.3h", s.spacing_below},
                            {"spacing_above_1.5h", s.spacing_above},
@@ -81,14 +84,17 @@ nlohmann::json to_json(const SceneRunReport& r) {
 
 void print_summary(std::ostream& out, const SceneRunReport& r) {
   char line[256];
+  const std::string resampling =
+      r.resample ? "resample " + r.policy.to_string() + ": " + std::to_string(r.resamples) + " resamples"
+                 : std::string("without resampling");
   std::snprintf(line, sizeof line, "%s: %dD, %s, h = %g, Delta = %gh, %s %s, %zu/%zu steps in %zu stage%s, %s\n",
                 r.scene.c_str(), r.dimension, r.shape_source.c_str(), r.h, r.radius_factor, to_string(r.kind),
                 to_string(r.variant), r.steps, r.steps_planned, r.stages, r.stages == 1 ? "" : "s",
-                r.resample ? "resampling every step" : "without resampling");
+                resampling.c_str());
   out << line;
-  std::snprintf(line, sizeof line, "points: initial %zu, final %zu (min %zu, max %zu); spacing/h over %zu frames: min %.3f median %.3f max %.3f\n",
-                r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured, r.spacing_h.min,
-                r.spacing_h.median, r.spacing_h.max);
+  std::snprintf(line, sizeof line, "points: initial %zu, final %zu (min %zu, max %zu); spacing/h over %zu %sframes: min %.3f median %.3f max %.3f\n",
+                r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured,
+                r.resample ? "resampled " : "", r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
   out << line;
   std::snprintf(line, sizeof line, "spacing outside [0.3 h, 1.5 h]: %zu below, %zu above, of %zu measured (%.3f %%)\n",
                 r.spacing_below, r.spacing_above, r.spacing_points,
@@ -107,6 +113,10 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
                 r.timings.normals, r.timings.function, r.timings.resample, r.timings.deform, r.timings.hash,
                 r.timings.total(), r.tracer_seconds, r.measure_seconds, r.wall_seconds);
   out << line;
+  if (r.resample && r.policy.kind == ResamplePolicy::Kind::automatic) {
+    std::snprintf(line, sizeof line, "sampling-quality checks (auto): %.3f s\n", r.quality_seconds);
+    out << line;
+  }
   if (r.final_holes > 0) {
     std::snprintf(line, sizeof line, "final surface: F undefined at %zu of %zu probes of the exact shape\n",
                   r.final_holes, r.probes);

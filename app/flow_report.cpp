@@ -26,6 +26,7 @@ nlohmann::json to_json(const FlowTestReport& r) {
   j["steps_planned"] = r.steps_planned;
   j["resample"] = r.config.resample.to_string();
   j["resamples"] = r.resamples;
+  j["quality_seconds"] = r.quality_seconds;
   j["threads"] = r.config.threads;
   j["status"] = r.broken ? "broken" : "ok";
   j["status_reason"] = r.status_reason;
@@ -69,6 +70,11 @@ void print_table(std::ostream& out, const FlowTestReport& r) {
   };
   for (const PhaseTime& p : r.timings) row(p.phase, p.seconds);
   row("total", total);
+  if (c.resample.kind == ResamplePolicy::Kind::automatic) {
+    std::snprintf(line, sizeof line, "sampling-quality checks (auto, outside the phases): %.3f s, %.2f %% of total\n",
+                  r.quality_seconds, total > 0 ? 100 * r.quality_seconds / total : 0.0);
+    out << line;
+  }
   std::snprintf(line, sizeof line, "points: initial %zu, max %zu, final %zu; spacing/h min %.3f median %.3f max %.3f\n",
                 r.points_initial, r.points_max, r.points_final, r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
   out << line;

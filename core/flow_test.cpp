@@ -9,6 +9,7 @@
 #include "core/process_memory.hpp"
 #include "core/ray_tracing_surface.hpp"
 #include "core/shapes.hpp"
+#include "core/stopwatch.hpp"
 
 namespace amls {
 
@@ -52,7 +53,9 @@ void run_flow(Loop& loop, std::shared_ptr<const VelocityField<D>> field, double 
   for (std::size_t k = 0; k < report.steps_planned; ++k) {
     const double t0 = period * static_cast<double>(k) / static_cast<double>(report.steps_planned);
     const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
+    Stopwatch clock;
     const bool resample = config.resample.resample_now(k, loop.points(), 1.0 / config.grid, loop.pool());
+    report.quality_seconds += clock.lap();
     const auto stats = loop.step(flow, t0, t1, resample);
     report.resamples += resample ? 1 : 0;
     timings += stats.timings;

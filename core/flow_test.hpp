@@ -55,6 +55,10 @@ struct FlowTestReport {
   // order: normals, function, resample, deform, hash for the grid walk;
   // deform, remove_clusters, rebuild_tree, intersections, normals for ray tracing.
   PhaseTimes timings;
+  // Seconds the policy spent deciding whether to resample: measuring the
+  // sampling quality under `auto` (nothing else costs time). Not a phase of
+  // the loop, so not in `timings`.
+  double quality_seconds = 0.0;
   // Work done over the run: F evaluated at grid vertices (grid walk) or at the
   // samples along the rays (ray tracing), sign changes found (edges or
   // brackets), F evaluated by the root finder, candidates removed as clusters

@@ -76,6 +76,7 @@ struct ResamplePolicy {
   // "always", "auto" or "every:K"; throws std::invalid_argument naming the accepted forms.
   static ResamplePolicy parse(const std::string& text);
   std::string to_string() const;
+  bool operator==(const ResamplePolicy&) const = default;
 
   // The neighbour radius (units of h) that decides the band exactly: a gap
   // above max_gap or a feature below min_feature_size is found within it

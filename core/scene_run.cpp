@@ -145,6 +145,7 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
   report.kind = scene.kind;
   report.alpha = scene.alpha;
   report.resample = options.resample;
+  report.policy = options.policy;
   report.threads = options.threads;
   report.stages = scene.history.stages.size();
   report.steps_planned = scene.history.total_steps();
@@ -174,7 +175,9 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
   surface.set_points(std::move(shape.points));
 
   std::vector<double> medians;
-  // Measures the frame of `step` and hands it on.
+  // Measures the frame of `step` and hands it on. With resampling, only a
+  // resample's frame counts in the run's spacing statistics: they describe
+  // the resampler's points, not how far the deformation spread them since.
   auto frame = [&](std::size_t step, SceneStepRecord& record) {
     Stopwatch clock;
     const PointSet<D>& points = surface.points();
@@ -184,10 +187,13 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
     record.spacing_h = spacing_stats_of(spacings);
     record.spacing_below = static_cast<std::size_t>(std::lower_bound(spacings.begin(), spacings.end(), 0.3) - spacings.begin());
     record.spacing_above = static_cast<std::size_t>(spacings.end() - std::upper_bound(spacings.begin(), spacings.end(), 1.5));
-    report.spacing_points += spacings.size();
-    report.spacing_below += record.spacing_below;
-    report.spacing_above += record.spacing_above;
-    if (points.size() >= 2) {
+    const bool counted = !options.resample || record.resampled;
+    if (counted) {
+      report.spacing_points += spacings.size();
+      report.spacing_below += record.spacing_below;
+      report.spacing_above += record.spacing_above;
+    }
+    if (counted && points.size() >= 2) {
       report.spacing_h.min = report.frames_measured == 0 ? record.spacing_h.min
                                                          : std::min(report.spacing_h.min, record.spacing_h.min);
       report.spacing_h.max = std::max(report.spacing_h.max, record.spacing_h.max);
@@ -207,22 +213,31 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
   };
 
   ThreadPool& pool = surface.pool();
+  // With resampling, before step `step` (and after the last): resamples S(P)
+  // if the policy asks, and makes the frame. False if the resample is empty.
+  auto settle = [&](std::size_t step, SceneStepRecord& record) {
+    Stopwatch clock;
+    record.resampled = options.policy.resample_now(step, surface.points(), grid.spacing(), pool);
+    report.quality_seconds += clock.lap();
+    if (record.resampled) {
+      const StepStats stats = surface.resample_only();
+      record.timings = stats.timings;
+      record.failed_normal_fits = stats.normals.failed();
+      ++report.resamples;
+    }
+    frame(step, record);
+    return !surface.points().empty();
+  };
   SceneStepRecord record;
   if (!options.resample) frame(0, record);
   for (std::size_t k = 0; k < report.steps_planned; ++k) {
     const HistoryStep<D> step = scene.history.step(k);
     record.stage = step.stage;
-    if (options.resample) {
-      const StepStats stats = surface.resample_only();
-      record.timings = stats.timings;
-      record.failed_normal_fits = stats.normals.failed();
-      frame(k, record);
-      if (surface.points().empty()) {
-        report.per_step.push_back(record);
-        mark_broken(k, "the resampled point set is empty at step " + std::to_string(k) +
-                           ": the surface has no zero crossing on the grid");
-        break;
-      }
+    if (options.resample && !settle(k, record)) {
+      report.per_step.push_back(record);
+      mark_broken(k, "the resampled point set is empty at step " + std::to_string(k) +
+                         ": the surface has no zero crossing on the grid");
+      break;
     }
     report.per_step.push_back(record);
     const MlsDeformation<D> deformation(step.from, step.to, scene.kind, scene.alpha);
@@ -258,11 +273,8 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
     }
   }
   if (options.resample && !report.broken) {
-    const StepStats stats = surface.resample_only();
-    record.timings = stats.timings;
-    record.failed_normal_fits = stats.normals.failed();
-    report.timings += stats.timings;
-    frame(report.steps, record);
+    settle(report.steps, record);  // an empty final point set is flagged below
+    report.timings += record.timings;
     report.per_step.push_back(record);
   }
   report.points_final = surface.points().size();

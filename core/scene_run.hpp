@@ -8,9 +8,14 @@
 // sampled `tracers_per_point` times more densely (for a point-set file, the
 // file's own points), carried by the same maps and never resampled.
 //
-// With resampling, step k resamples S(P_k) into R_k (its spacing is measured
-// right then), and deforms R_k into P_{k+1}; after the last step S(P_N) is
-// resampled once more into R_N, the final point set. Frame k is R_k.
+// With resampling, the policy (core/resample_policy.hpp) decides before step
+// k whether S(P_k) is resampled into R_k; step k then deforms R_k (or P_k as
+// it is) into P_{k+1}. After the last step it decides once more, for P_N: the
+// final point set is R_N or P_N. Step 0 always resamples, and under `always`
+// every step does (R_0 ... R_N). Frame k is R_k, or P_k where the policy did
+// not resample; the spacing statistics take only the frames right after a
+// resample, the points the resampler made (a skipped step's frame is recorded
+// with its own spacing, but not counted in them).
 // Without resampling, frame k is P_k, the initial points deformed k times.
 //
 // Breakdown (the paper's Fig. 2(b)): without resampling, the surface S(P) has
@@ -29,12 +34,14 @@
 
 #include "core/deforming_surface.hpp"
 #include "core/metrics.hpp"
+#include "core/resample_policy.hpp"
 #include "core/scene.hpp"
 
 namespace amls {
 
 struct SceneRunOptions {
-  bool resample = true;
+  bool resample = true;  // false: deform the initial points only (`--no-resample`)
+  ResamplePolicy policy;  // when resampling, which steps resample
   int threads = 1;
   double tracers_per_point = 50.0;
   std::size_t max_steps = 0;  // stop after this many steps (0: the whole history)
@@ -44,6 +51,7 @@ struct SceneStepRecord {
   std::size_t step = 0;  // the state after this many steps
   std::size_t stage = 0;
   std::size_t points = 0;  // in the frame of this step
+  bool resampled = false;  // the frame is a resample's (R_k), made in this record's step
   SpacingStats spacing_h;  // of the frame's points, in units of h
   std::size_t spacing_below = 0;  // points whose nearest neighbour is nearer than 0.3 h
   std::size_t spacing_above = 0;  // ... farther than 1.5 h
@@ -69,11 +77,13 @@ struct SceneRunReport {
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;
   bool resample = true;
+  ResamplePolicy policy;  // when resampling
   int threads = 1;
 
   std::size_t stages = 0;
   std::size_t steps = 0;  // done
   std::size_t steps_planned = 0;
+  std::size_t resamples = 0;  // R_k made, the final R_N included (steps + 1 under `always`)
   bool broken = false;
   std::string status_reason;
   std::size_t broken_at_step = 0;  // the first step at which the surface was found broken (if broken)
@@ -85,11 +95,12 @@ struct SceneRunReport {
   std::size_t tracers = 0;
   std::size_t probes = 0;
 
-  // Over every frame: the least minimum, the median of the medians, the
-  // largest maximum (right after each resample when resampling).
+  // Over the frames measured (with resampling, those right after a resample;
+  // without, every frame): the least minimum, the median of the medians, the
+  // largest maximum.
   SpacingStats spacing_h;
   std::size_t frames_measured = 0;
-  // Over every frame: points measured, and those with a nearest neighbour
+  // Over the same frames: points measured, and those with a nearest neighbour
   // nearer than 0.3 h or farther than 1.5 h (the bounds).
   std::size_t spacing_points = 0;
   std::size_t spacing_below = 0;
@@ -104,6 +115,7 @@ struct SceneRunReport {
   PhaseTimings timings;  // the surface's own work, as in the flow tests
   double tracer_seconds = 0.0;
   double measure_seconds = 0.0;  // spacing, probes and distances
+  double quality_seconds = 0.0;  // the policy's sampling-quality checks (`auto`; not in `timings`)
   double wall_seconds = 0.0;
   std::size_t affine_fallbacks = 0;
   std::vector<std::string> warnings;

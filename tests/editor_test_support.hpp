@@ -11,7 +11,8 @@
 
 namespace amls::test {
 
-// What `amls deform` (with --no-resample if the recording says so) makes of
+// What `amls deform` (with the recording's replay_arguments(): --no-resample,
+// or the session's resample policy) makes of
 // the session saved as a scene: written by core's write_scene, read back by
 // read_scene and run by run_scene. Returns its final point set.
 template <int D>
@@ -21,6 +22,7 @@ PointSet<D> replay_with_amls_deform(const editor::SessionRecording<D>& recording
   write_scene(path, editor::recorded_scene(recording, path, "session"));
   SceneRunOptions options;
   options.resample = !recording.no_resample();
+  options.policy = recording.settings().policy;
   options.tracers_per_point = 1.0;  // the run's measurements against the exact shape are not compared here
   PointSet<D> final_points;
   const FrameSink<D> keep_last = [&](std::size_t, const PointSet<D>& points) { final_points = points; };

@@ -2,6 +2,7 @@
 #   cmake -DAMLS=<amls> -DSCENE=<clover2d.json> -DWORK_DIR=<dir> -P render_command_test.cmake
 # Renders a small generated point set and a scene, checks each PNG's signature and
 # IHDR size, and checks that bad input fails with a clear message and no PNG.
+include("${CMAKE_CURRENT_LIST_DIR}/amls_command_checks.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
@@ -35,20 +36,9 @@ function(render_ok)
   endif()
 endfunction()
 
-# Runs amls with `args`; it must fail with `expected` in its message and write no PNG.
+# Runs amls render with `args`; it must fail with `expected` in its message and write no PNG.
 function(render_fails expected png)
-  execute_process(COMMAND "${AMLS}" render ${ARGN} --out "${png}" RESULT_VARIABLE code OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  if(code EQUAL 0)
-    message(FATAL_ERROR "amls render ${ARGN} succeeded but should have failed")
-  endif()
-  string(FIND "${out}${err}" "${expected}" found)
-  if(found EQUAL -1)
-    message(FATAL_ERROR "amls render ${ARGN}: expected '${expected}' in the message, got:\n${out}${err}")
-  endif()
-  if(EXISTS "${png}")
-    message(FATAL_ERROR "amls render ${ARGN} failed but left ${png}")
-  endif()
+  amls_fails("${expected}" "${png}" render ${ARGN} --out "${png}")
 endfunction()
 
 # An octahedron's six vertices with outward normals: a tiny 3D point set.

@@ -41,7 +41,7 @@ TEST_CASE("moves separated by another command are kept apart, in order") {
   CHECK(moved_x(*queue.pop()) == 2.0);
 }
 
-TEST_CASE("a load or a parameter change moves the cancel epoch on; a handle edit does not") {
+TEST_CASE("a load or a parameter change moves the cancel epoch on - a handle edit does not") {
   CommandQueue queue;
   const std::uint64_t start = queue.cancel_epoch();
   queue.push(command::AddHandle{Vec<3>::Zero()});
@@ -64,7 +64,7 @@ TEST_CASE("a popped command carries the epoch it was popped in, so later cancels
   CHECK(queue.pop()->epoch == queue.cancel_epoch());
 }
 
-TEST_CASE("a load, Esc or undo drops the moves still queued; a parameter change keeps them") {
+TEST_CASE("a load, Esc or undo drops the moves still queued - a parameter change keeps them") {
   CommandQueue queue;
   queue.push(move_to(1.0));
   queue.push(command::SetDeformation{MlsKind::affine, 1.0});

@@ -55,7 +55,7 @@ TEST_CASE("dragging one handle of two stretches the circle towards it and keeps 
   CHECK(session.points().size() > 250);
 }
 
-TEST_CASE("undo restores the point set and handles of the drag's start exactly; redo its end") {
+TEST_CASE("undo restores the point set and handles of the drag's start exactly - redo its end") {
   EditSession<2> session = circle_with_two_handles();
   drag_right_handle(session, 1.3, 3);
   const PointSet<2> before = session.points();
@@ -199,7 +199,7 @@ TEST_CASE("toggling the variant resamples the surface at once, without deforming
 
 TEST_CASE("without resampling a step only deforms, so the points spread apart") {
   EditSession<2> session = circle_with_two_handles();
-  session.set_resampling(false);
+  session.set_resampling(false, ResamplePolicy{});
   const std::size_t n = session.points().size();
   drag_right_handle(session, 2.0, 2);
   CHECK(session.points().size() == n);
@@ -217,7 +217,7 @@ TEST_CASE("handles: removing and adding are undoable, a bad index is refused") {
   CHECK_THROWS_AS(session.move_handles(wrong, kRunAll), std::invalid_argument);
 }
 
-TEST_CASE("a grid change resamples at the new spacing; reset goes back to the initial shape") {
+TEST_CASE("a grid change resamples at the new spacing - reset goes back to the initial shape") {
   EditSession<2> session = circle_with_two_handles();
   drag_right_handle(session, 1.3, 2);
   session.set_grid(0.012, 3.0, kRunAll);
@@ -263,6 +263,37 @@ TEST_CASE("a session of handle drags, handle changes, an undo and an Esc replays
   REQUIRE(recording.exact());
   CHECK(recording.steps().size() == 4 + 3 + 2);
   CHECK(recording.history().stages.size() == 3);
+  const PointSet<2> replayed = amls::test::replay_with_amls_deform(recording);
+  CHECK(replayed.positions == session.points().positions);
+  CHECK(replayed.normals == session.points().normals);
+}
+
+TEST_CASE("under auto a session resamples only where the sampling asks, and replays exactly with --resample auto") {
+  EditSession<2> session = circle_with_two_handles();
+  CHECK_THROWS_AS(session.set_resampling(true, ResamplePolicy{ResamplePolicy::Kind::every, 0}), std::invalid_argument);
+  session.set_resampling(true, ResamplePolicy::parse("auto"));
+  std::vector<std::string> names;
+  const WorkControl control{{}, [&](const char* name, int, int) { names.push_back(name); }};
+  std::size_t resamples = 0, steps = 0;
+  session.begin_drag();
+  std::vector<Vec<2>> to = session.handles();
+  for (int k = 1; k <= 20; ++k) {
+    to[1].x() = 1.0 + 0.15 * k;  // 6 h a step: the circle stretches to 2.5 times its width
+    const EditResult result = session.move_handles(to, control);
+    REQUIRE(result.stepped);
+    resamples += result.resamples;
+    ++steps;
+  }
+  // The first step resamples the loaded points (step 0 always does); every
+  // step is followed by a check, and by a resample only where it failed.
+  CHECK(names.at(0) == "resampling");
+  CHECK(std::count(names.begin(), names.end(), "checking the sampling") == 20);
+  CHECK(std::count(names.begin(), names.end(), "resampling") == static_cast<std::ptrdiff_t>(resamples));
+  CHECK(resamples >= 2);
+  CHECK(resamples < steps);
+  const SessionRecording<2>& recording = session.recording();
+  REQUIRE(recording.exact());
+  CHECK(recording.replay_arguments() == "--resample auto");
   const PointSet<2> replayed = amls::test::replay_with_amls_deform(recording);
   CHECK(replayed.positions == session.points().positions);
   CHECK(replayed.normals == session.points().normals);

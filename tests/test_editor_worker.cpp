@@ -111,7 +111,7 @@ TEST_CASE("a load cancels a running step, and the new shape replaces the old") {
   CHECK(snapshot->steps == 0);
 }
 
-TEST_CASE("a parameter change cancels a running step; the state is as before the step, then changed") {
+TEST_CASE("a parameter change cancels a running step - the state is as before the step, then changed") {
   EditorWorker worker;
   worker.post(heavy_sphere());
   worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
@@ -129,7 +129,7 @@ TEST_CASE("a parameter change cancels a running step; the state is as before the
   CHECK(snapshot->steps == 0);
 }
 
-TEST_CASE("a parameter change stops a step inside a phase; the state is as before the step, and the worker goes on") {
+TEST_CASE("a parameter change stops a step inside a phase - the state is as before the step, and the worker goes on") {
   // Phases of the first step: 0 resamples the loaded points, 1 deforms them in
   // place, 2 resamples the deformed points.
   for (const int phase : {1, 2}) {
@@ -191,7 +191,7 @@ TEST_CASE("the worker shuts down cleanly while a step runs") {
   CHECK(std::chrono::steady_clock::now() - begin < kPatience);
 }
 
-TEST_CASE("export writes the current point set; a failed export leaves the previous file intact") {
+TEST_CASE("export writes the current point set - a failed export leaves the previous file intact") {
   amls::test::TempDir dir;
   const std::string out = dir.file("out.ply");
   EditorWorker worker;
@@ -242,6 +242,28 @@ TEST_CASE("Save Scene writes the session's steps as a scene whose start reads ba
   CHECK(start.points.size() == 250);
   CHECK(start.settings.spacing == 0.024);
   CHECK(start.handles.at(0).x() == 1.0);
+}
+
+TEST_CASE("the resample switch reaches the session, whose snapshot counts the resamples and says how to replay") {
+  EditorWorker worker;
+  worker.post(circle());
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  worker.post(command::SetResampling{true, ResamplePolicy::parse("every:2")});
+  drag(worker, {Vec<3>(1, 0, 0)}, 0, 0.2, 5);
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const std::shared_ptr<const Snapshot> s = worker.snapshot();
+  CHECK(s->settings.resample);
+  CHECK(s->settings.policy.to_string() == "every:2");
+  REQUIRE(s->steps >= 1);
+  // The loaded points before step 0, then after every second step (the next one is 2, 4, ...).
+  CHECK(s->resamples == 1 + s->steps / 2);
+  CHECK(s->replay_arguments == "--resample every:2");
+  CHECK(s->replay_note.empty());
+
+  worker.post(command::SetResampling{true, ResamplePolicy{ResamplePolicy::Kind::every, 0}});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(has_message(worker.take_messages(), Message::Level::error, "K >= 1"));
+  CHECK(worker.snapshot()->settings.policy.to_string() == "every:2");
 }
 
 TEST_CASE("a torus or a rounded box loaded from a scene is saved back as the same shape, not as points") {

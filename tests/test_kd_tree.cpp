@@ -42,7 +42,7 @@ TEST_CASE("k-d tree radius queries find exactly the points a brute-force search 
   check_against_brute_force<3>(0.25, 4);
 }
 
-TEST_CASE("a rebuilt k-d tree answers for the new points; an empty one finds nothing") {
+TEST_CASE("a rebuilt k-d tree answers for the new points - an empty one finds nothing") {
   KdTree<2> tree;
   std::vector<std::uint32_t> found;
   tree.gather(Vec<2>(0, 0), 1.0, found);

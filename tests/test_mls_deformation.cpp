@@ -501,7 +501,7 @@ TEST_CASE("carried normals stay unit length and point outward under a smooth han
   }
 }
 
-TEST_CASE("a single handle translates everything; no handles leave everything in place") {
+TEST_CASE("a single handle translates everything - no handles leave everything in place") {
   check_single_handle_translates<2>();
   check_single_handle_translates<3>();
   check_no_handles_is_identity<2>();

@@ -39,7 +39,7 @@ TEST_CASE("the ray through a point's pixel passes through the point") {
   }
 }
 
-TEST_CASE("the plane point under a pixel inverts the projection; in 2D it lies in z = 0") {
+TEST_CASE("the plane point under a pixel inverts the projection - in 2D it lies in z = 0") {
   const Camera planar = planar_camera();
   const glm::vec2 pixel = window_of(planar, glm::vec3(0.25f, 0.5f, 0.0f));
   const std::optional<glm::vec3> p = plane_point(planar, kViewport, pixel, glm::vec3(0.0f));
@@ -54,7 +54,7 @@ TEST_CASE("the plane point under a pixel inverts the projection; in 2D it lies i
   CHECK(glm::length(*q - anchor) < 1e-4f);
 }
 
-TEST_CASE("a point is picked within the radius, the nearest on screen; none farther away") {
+TEST_CASE("a point is picked within the radius, the nearest on screen - none farther away") {
   const Camera c = planar_camera();
   const std::vector<glm::vec3> points{{0.0f, 0.0f, 0.0f}, {0.02f, 0.0f, 0.0f}, {0.5f, 0.5f, 0.0f}};
   const glm::vec2 near_second = window_of(c, points[1]) + glm::vec2(1.0f, 1.0f);

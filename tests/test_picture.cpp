@@ -73,7 +73,7 @@ TEST_CASE("render picture: a 3D point set file renders at the asked size, centre
   CHECK(is_color(image, 157, 117, options.background, 0));
 }
 
-TEST_CASE("render picture: --view with a distance keeps it; a farther eye makes a smaller image") {
+TEST_CASE("render picture: --view with a distance keeps it - a farther eye makes a smaller image") {
   TempDir dir;
   const std::string ply = dir.file("sphere.ply");
   write_point_set(ply, sample_sphere(Vec<3>::Zero(), 1.0, 3000), PointFileFormat::ply_binary_little_endian);
@@ -153,7 +153,7 @@ TEST_CASE("render picture: a triangle mesh is sampled at its diagonal / 200 with
   CHECK_FALSE(is_color(render(picture), 80, 60, RenderOptions{}.background, 0));
 }
 
-TEST_CASE("render picture: a scene at step K, with its handles and its curve; 'last' is its whole history") {
+TEST_CASE("render picture: a scene at step K, with its handles and its curve - 'last' is its whole history") {
   TempDir dir;
   const std::string json = dir.file("pulled.json");
   write_scene(json, pulled_circle(3));

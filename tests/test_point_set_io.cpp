@@ -188,7 +188,7 @@ TEST_CASE("a flat 3D set stays 3D and an empty set round-trips") {
   }
 }
 
-TEST_CASE("the format follows the extension, in any case; other extensions are refused") {
+TEST_CASE("the format follows the extension, in any case - other extensions are refused") {
   CHECK(format_from_extension("a/b.ply") == PointFileFormat::ply_binary_little_endian);
   CHECK(format_from_extension("B.PLY") == PointFileFormat::ply_binary_little_endian);
   CHECK(format_from_extension("c.Xyz") == PointFileFormat::xyz);
@@ -282,7 +282,7 @@ TEST_CASE("coordinates of every PLY scalar type are read, in ASCII and both bina
   }
 }
 
-TEST_CASE("XYZ files: CRLF, comments and blank lines; 3 or 6 columns in 3D, 2 or 4 in 2D") {
+TEST_CASE("XYZ files: CRLF, comments and blank lines - 3 or 6 columns in 3D, 2 or 4 in 2D") {
   TempDir dir;
   const std::string path = dir.file("hand.xyz");
   write_file(path, "# scanned\r\n\r\n1 2 3 0 0 2\r\n  4\t5 6 1 0 0  \r\n#last\r\n");
@@ -526,7 +526,7 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary file 
   CHECK(read_point_set(path).points.empty());
 }
 
-TEST_CASE("to_2d refuses points off the plane z = 0; to_3d puts them on it") {
+TEST_CASE("to_2d refuses points off the plane z = 0 - to_3d puts them on it") {
   PointSet<2> flat;
   flat.add(Vec<2>(1, 2), Vec<2>(0, 1));
   const PointSet<3> lifted = to_3d(flat);

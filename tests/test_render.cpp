@@ -421,7 +421,7 @@ TEST_CASE("a renderer made without a current GL context is a clear error") {
   CHECK_THROWS_AS(SplatRenderer{}, std::runtime_error);
 }
 
-TEST_CASE("a camera saved as JSON restores the same view; bad JSON names the field") {
+TEST_CASE("a camera saved as JSON restores the same view - bad JSON names the field") {
   Camera camera = Camera::orbit();
   camera.fit({glm::vec3(1.0f, 2.0f, 3.0f), 0.5f}, 1.6f);
   camera.orbit_by(25.0f, -10.0f);

@@ -27,7 +27,7 @@ void editor_step(SessionRecording<2>& r, const Handles& from, const Handles& to,
 
 }  // namespace
 
-TEST_CASE("steps that continue each other share a stage; a changed handle set starts one") {
+TEST_CASE("steps that continue each other share a stage - a changed handle set starts one") {
   SessionRecording<2> r(circle_source(), {});
   const SurfaceSettings s;
   const Handles a{{1, 0}}, b{{1.1, 0}}, c{{1.2, 0}};
@@ -48,7 +48,7 @@ TEST_CASE("steps that continue each other share a stage; a changed handle set st
   CHECK(r.exact());
 }
 
-TEST_CASE("settings changed before the first step are the scene's; after it they spoil an exact replay") {
+TEST_CASE("settings changed before the first step are the scene's - after it they spoil an exact replay") {
   SurfaceSettings s;
   SessionRecording<2> r(circle_source(), s);
   s.variant = Variant::interpolated;
@@ -65,7 +65,7 @@ TEST_CASE("settings changed before the first step are the scene's; after it they
   CHECK(r.inexact_reason().find("twice") != std::string::npos);
 }
 
-TEST_CASE("a session without resampling is replayed with --no-resample; switching it on spoils that") {
+TEST_CASE("a session without resampling is replayed with --no-resample - switching it on spoils that") {
   SurfaceSettings s;
   s.resample = false;
   SessionRecording<2> r(circle_source(), s);
@@ -75,6 +75,41 @@ TEST_CASE("a session without resampling is replayed with --no-resample; switchin
   CHECK(r.no_resample());
   r.resampled(s);
   CHECK(!r.exact());
+}
+
+TEST_CASE("under auto a step the policy left unresampled replays exactly, with the policy on the command line") {
+  SurfaceSettings s;
+  s.policy = ResamplePolicy::parse("auto");
+  SessionRecording<2> r(circle_source(), s);
+  CHECK(r.replay_arguments().empty());  // nothing decided yet
+  r.resampled(s);
+  r.deformed({{1, 0}}, {{1.1, 0}}, s);  // the policy kept these points: no resample
+  r.deformed({{1.1, 0}}, {{1.2, 0}}, s);
+  CHECK(r.exact());
+  CHECK(r.settings().policy.to_string() == "auto");
+  CHECK(r.replay_arguments() == "--resample auto");
+  CHECK(recorded_scene(r, "/tmp/x.json", "x").description.find("`amls deform --resample auto` replays it") !=
+        std::string::npos);
+
+  s.policy = ResamplePolicy::parse("every:3");
+  r.deformed({{1.2, 0}}, {{1.3, 0}}, s);
+  CHECK(!r.exact());
+  CHECK(r.inexact_reason().find("resample policy changed") != std::string::npos);
+}
+
+TEST_CASE("replay arguments: none under always, --no-resample without resampling, and switching it off spoils") {
+  SurfaceSettings s;
+  SessionRecording<2> always(circle_source(), s);
+  editor_step(always, {{1, 0}}, {{1.1, 0}}, s, true);
+  CHECK(always.replay_arguments().empty());
+  s.resample = false;
+  always.deformed({{1.1, 0}}, {{1.2, 0}}, s);
+  CHECK(!always.exact());
+  CHECK(always.inexact_reason().find("switched off") != std::string::npos);
+
+  SessionRecording<2> never(circle_source(), s);
+  never.deformed({{1, 0}}, {{1.1, 0}}, s);
+  CHECK(never.replay_arguments() == "--no-resample");
 }
 
 TEST_CASE("a change of MLS kind or alpha after the first step spoils an exact replay") {

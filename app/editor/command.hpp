@@ -45,6 +45,7 @@ struct SetDeformation {
 };
 struct SetResampling {
   bool enabled = true;
+  ResamplePolicy policy;
 };
 struct SetCurveTracing {  // 2D: trace the MLS curve for display
   bool enabled = true;

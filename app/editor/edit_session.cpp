@@ -109,7 +109,7 @@ std::unique_ptr<DeformingSurface<D>> EditSession<D>::make_surface(const SurfaceS
 
 template <int D>
 typename EditSession<D>::State EditSession<D>::current_state() const {
-  return State{surface_->points(), handles_, settings_, resampled_, recording_};
+  return State{surface_->points(), handles_, settings_, settled_, recording_};
 }
 
 template <int D>
@@ -123,7 +123,7 @@ void EditSession<D>::restore(const State& state) {
   surface_->set_points(state.points);
   settings_ = next;
   handles_ = state.handles;
-  resampled_ = state.resampled;
+  settled_ = state.settled;
   recording_ = state.recording;
   ++version_;
 }
@@ -200,23 +200,39 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
     result.changed = true;
     return result;
   }
-  // As `amls deform`: resample the points first unless they are a resample's already.
+  // As `amls deform`, where the policy decides before step k whether to
+  // resample and once more after the last step: here the decision for the
+  // points a step made is taken right after it (the step that follows, if
+  // any, is k + 1), so the surface shown is the one a replay ends with. The
+  // points are settled first unless the policy saw them already (the loaded
+  // shape: step 0 always resamples).
   const bool resample = settings_.resample;
-  const bool resample_first = resample && !resampled_;
-  Phases phases(control, (resample_first ? 1 : 0) + 1 + (resample ? 1 : 0));
+  const bool settle_first = resample && !settled_;
+  const ResamplePolicy& policy = settings_.policy;
+  const std::size_t k = recording_.steps().size();
+  // The phases of settling the points before step `step`: measuring them (`auto`, after step 0), resampling.
+  auto settle_phases = [&](std::size_t step) {
+    return (policy.kind == ResamplePolicy::Kind::automatic && step > 0 ? 1 : 0) + 1;
+  };
+  Phases phases(control, (settle_first ? settle_phases(k) : 0) + 1 + (resample ? settle_phases(k + 1) : 0));
+  // Settles the points before step `step`; false if the edit must stop.
+  auto settle = [&](std::size_t step, bool& resampled) {
+    if (settle_phases(step) > 1 && !phases.next("checking the sampling")) return false;
+    resampled = policy.resample_now(step, surface_->points(), grid().spacing(), surface_->pool());
+    if (!resampled) return true;
+    if (!phases.next("resampling")) return false;
+    add_stats(result, surface_->resample_only());
+    ++result.resamples;
+    return true;
+  };
+  bool resampled_first = false;
+  bool resampled_after = false;
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
-    if (resample_first) {
-      if (!phases.next("resampling")) return false;
-      add_stats(result, surface_->resample_only());
-    }
+    if (settle_first && !settle(k, resampled_first)) return false;
     if (!phases.next("deforming")) return false;
     add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
-    if (resample) {
-      if (!phases.next("resampling")) return false;
-      add_stats(result, surface_->resample_only());
-    }
-    return true;
+    return !resample || settle(k + 1, resampled_after);
   });
   if (!finished) {
     if (phases.started()) roll_back(std::move(before));
@@ -224,11 +240,11 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
     result.cancelled = true;
     return result;
   }
-  if (resample_first) recording_.resampled(settings_);
+  if (resampled_first) recording_.resampled(settings_);
   recording_.deformed(handles_, to, settings_);
-  if (resample) recording_.resampled(settings_);
+  if (resampled_after) recording_.resampled(settings_);
   handles_ = std::move(to);
-  resampled_ = resample;
+  settled_ = resample;
   ++version_;
   result.changed = result.stepped = true;
   return result;
@@ -244,6 +260,7 @@ EditResult EditSession<D>::resample_now(const WorkControl& control) {
   const bool finished = phases.run(surface_->pool(), [&] {
     if (!phases.next("resampling")) return false;
     add_stats(result, surface_->resample_only());
+    result.resamples = 1;
     return true;
   });
   if (!finished) {
@@ -252,7 +269,7 @@ EditResult EditSession<D>::resample_now(const WorkControl& control) {
     return result;
   }
   recording_.resampled(settings_);
-  resampled_ = true;
+  settled_ = true;
   ++version_;
   return result;
 }
@@ -300,8 +317,12 @@ void EditSession<D>::set_deformation(MlsKind kind, double alpha) {
 }
 
 template <int D>
-void EditSession<D>::set_resampling(bool enabled) {
-  settings_.resample = enabled;
+void EditSession<D>::set_resampling(bool enabled, const ResamplePolicy& policy) {
+  SurfaceSettings next = settings_;
+  next.resample = enabled;
+  next.policy = policy;
+  validate(next);
+  settings_ = next;
 }
 
 template <int D>

@@ -5,8 +5,9 @@
 //
 // A handle move is one step of the paper's loop (section 4): the MLS
 // deformation from the handles' previous positions to the new ones, then a
-// resample - the same calls, in the same order, as `amls deform`, so that a
-// saved session replays exactly (session_recording.hpp).
+// resample if the resample policy asks for one - the same calls, in the same
+// order, with the same decisions, as `amls deform`, so that a saved session
+// replays exactly (session_recording.hpp).
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -34,6 +35,7 @@ struct EditResult {
   // keeps its new value, unresampled.
   bool cancelled = false;
   bool stepped = false;    // a deformation step was taken
+  std::size_t resamples = 0;  // resamples the edit did
   bool has_stats = false;  // the surface did work, summed in `stats`
   StepStats stats;
 };
@@ -74,13 +76,14 @@ class EditSession {
   bool cancel_drag();
 
   // Parameters. The variant and the grid resample the current surface at once
-  // (no deformation) and are undoable; kind, alpha and resampling apply to the
-  // next steps and are kept by undo. set_grid throws std::invalid_argument for
-  // a bad value or one that would make millions of points, changing nothing.
+  // (no deformation) and are undoable; kind, alpha and resampling (on or off,
+  // and the policy) apply to the next steps and are kept by undo. set_grid and
+  // set_resampling throw std::invalid_argument for a bad value, and set_grid
+  // for one that would make millions of points, changing nothing.
   EditResult set_variant(Variant variant, const WorkControl& control);
   EditResult set_grid(double spacing, double radius_factor, const WorkControl& control);
   void set_deformation(MlsKind kind, double alpha);
-  void set_resampling(bool enabled);
+  void set_resampling(bool enabled, const ResamplePolicy& policy);
 
   bool undo();
   bool redo();
@@ -93,7 +96,7 @@ class EditSession {
     PointSet<D> points;
     std::vector<Vec<D>> handles;
     SurfaceSettings settings;  // only h, Delta / h and the variant are restored
-    bool resampled = false;
+    bool settled = false;
     SessionRecording<D> recording;
   };
   static constexpr std::size_t kMaxUndo = 100;
@@ -115,7 +118,10 @@ class EditSession {
   std::unique_ptr<DeformingSurface<D>> surface_;
   std::vector<Vec<D>> handles_;
   SurfaceSettings settings_;
-  bool resampled_ = false;  // the points are the last resample's, with nothing done since
+  // The resample policy has had its say on the points: they are a resample's,
+  // or a step's that the policy chose not to resample. Only the initial points
+  // and those of a step taken with resampling off are not.
+  bool settled_ = false;
   SessionRecording<D> recording_;
   std::deque<State> undo_, redo_;
   std::uint64_t version_ = 0;

@@ -200,7 +200,7 @@ void EditorApp::take_snapshot() {
   log_.line("snapshot gen=" + std::to_string(next->generation) + " processed=" + std::to_string(next->processed) +
             " load=" + std::to_string(next->load_id) + " dimension=" + std::to_string(next->dimension) +
             " points=" + std::to_string(next->points.size()) + " steps=" + std::to_string(next->steps) +
-            " variant=" + to_string(next->settings.variant));
+            " variant=" + to_string(next->settings.variant) + " resamples=" + std::to_string(next->resamples));
   shown_ = std::move(next);
 }
 

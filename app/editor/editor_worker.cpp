@@ -128,6 +128,7 @@ void EditorWorker::start(const InitialShape& shape) {
   has_last_ = false;
   total_ = PhaseTimings{};
   steps_ = 0;
+  resamples_ = 0;
   step_times_.clear();
   for (const std::string& warning : shape.warnings) message(Message::Level::warning, warning);
   std::ostringstream text;
@@ -138,6 +139,7 @@ void EditorWorker::start(const InitialShape& shape) {
 
 void EditorWorker::note_result(const EditResult& result) {
   if (result.cancelled) ++cancelled_;
+  resamples_ += result.resamples;
   if (!result.has_stats) return;
   has_last_ = true;
   last_ = result.stats;
@@ -207,7 +209,7 @@ void EditorWorker::execute(const QueuedCommand& queued) {
             require_session([&](auto& s) { note_result(s.set_grid(c.spacing, c.radius_factor, control)); });
           },
           [&](const SetDeformation& c) { require_session([&](auto& s) { s.set_deformation(c.kind, c.alpha); }); },
-          [&](const SetResampling& c) { require_session([&](auto& s) { s.set_resampling(c.enabled); }); },
+          [&](const SetResampling& c) { require_session([&](auto& s) { s.set_resampling(c.enabled, c.policy); }); },
           [&](const SetCurveTracing& c) { curve_enabled_ = c.enabled; },
           [&](const Undo&) {
             require_session([&](auto& s) {
@@ -259,6 +261,7 @@ void EditorWorker::publish(std::uint64_t processed) {
   snapshot->last = last_;
   snapshot->total = total_;
   snapshot->steps = steps_;
+  snapshot->resamples = resamples_;
   snapshot->cancelled = cancelled_;
   const Clock::time_point now = Clock::now();
   while (!step_times_.empty() && now - step_times_.front() > std::chrono::seconds(1)) step_times_.pop_front();
@@ -277,7 +280,7 @@ void EditorWorker::publish(std::uint64_t processed) {
                           snapshot->can_redo = s.can_redo();
                           snapshot->recorded_steps = s.recording().steps().size();
                           snapshot->replay_note = s.recording().inexact_reason();
-                          snapshot->replay_no_resample = s.recording().no_resample();
+                          snapshot->replay_arguments = s.recording().replay_arguments();
                           // Points, quality and curve are derived once per point set.
                           const bool same = derived_ && derived_version_ == s.version() && derived_load_ == load_id_;
                           if (same) {

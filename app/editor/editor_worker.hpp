@@ -80,6 +80,7 @@ class EditorWorker {
   StepStats last_;
   PhaseTimings total_;
   std::size_t steps_ = 0;
+  std::size_t resamples_ = 0;
   std::size_t cancelled_ = 0;
   std::deque<Clock::time_point> step_times_;
   // What the last snapshot derived from the points, kept while they do not change.

@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -78,12 +79,39 @@ void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& ac
     ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
     ImGui::TextWrapped("Replay not exact: %s", snapshot.replay_note.c_str());
     ImGui::PopStyleColor();
-  } else if (snapshot.replay_no_resample && snapshot.recorded_steps > 0) {
-    ImGui::TextColored(kDim, "replay with amls deform --no-resample");
+  } else if (!snapshot.replay_arguments.empty() && snapshot.recorded_steps > 0) {
+    ImGui::TextColored(kDim, "replay with amls deform %s", snapshot.replay_arguments.c_str());
   }
   if (ImGui::Button("Screenshot (F12)")) actions.screenshot();
   ImGui::SameLine();
   if (ImGui::Button("Fit view (F)")) actions.fit_view();
+}
+
+// Resampling on or off, and when: after every step, when the sampling
+// quality leaves its band (auto), or every K-th step. One combo, so that "off"
+// cannot be combined with a policy it ignores.
+void resampling_switch(UiState& ui, const PanelActions& actions) {
+  ResamplePolicy& policy = ui.edit.policy;
+  // The combo's entries in the order of ResamplePolicy::Kind, then off.
+  static const char* kWhen[] = {"always", "auto", "every K steps", "off"};
+  constexpr int kOff = 3;
+  int when = ui.edit.resample ? static_cast<int>(policy.kind) : kOff;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+  bool changed = ImGui::Combo("resample", &when, kWhen, 4);
+  ui.edit.resample = when != kOff;
+  if (ui.edit.resample) policy.kind = static_cast<ResamplePolicy::Kind>(when);
+  if (ui.edit.resample && policy.kind == ResamplePolicy::Kind::every) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 3.0f);
+    ImGui::InputInt("K", &policy.every, 0);
+    policy.every = std::max(1, policy.every);
+    changed = ImGui::IsItemDeactivatedAfterEdit() || changed;
+  }
+  if (changed) actions.post(command::SetResampling{ui.edit.resample, policy});
+  if (!ui.edit.resample)
+    ImGui::TextColored(kWarning, "off: the points spread and S(P) breaks");
+  else if (policy.kind == ResamplePolicy::Kind::automatic)
+    ImGui::TextColored(kDim, "when a gap exceeds 2.5 h or a feature is sharper than 1.4 h");
 }
 
 void surface_section(UiState& ui, const PanelActions& actions) {
@@ -107,9 +135,7 @@ void surface_section(UiState& ui, const PanelActions& actions) {
     ui.edit.variant = variant == 0 ? Variant::exact : Variant::interpolated;
     actions.post(command::SetVariant{ui.edit.variant});
   }
-  if (ImGui::Checkbox("resample after every step", &ui.edit.resample))
-    actions.post(command::SetResampling{ui.edit.resample});
-  if (!ui.edit.resample) ImGui::TextColored(kWarning, "off: the points spread and S(P) breaks");
+  resampling_switch(ui, actions);
 }
 
 void deformation_section(UiState& ui, const Snapshot& snapshot, ViewController& view, const PanelActions& actions) {
@@ -216,7 +242,8 @@ void table1_section(const Snapshot& snapshot) {
     }
     ImGui::EndTable();
   }
-  ImGui::Text("%zu steps, %.0f steps/s, %zu points", snapshot.steps, snapshot.steps_per_second, snapshot.points.size());
+  ImGui::Text("%zu steps, %zu resamples, %.0f steps/s, %zu points", snapshot.steps, snapshot.resamples,
+              snapshot.steps_per_second, snapshot.points.size());
   ImGui::Text("spacing / h: min %.2f  median %.2f  max %.2f", snapshot.spacing.min, snapshot.spacing.median,
               snapshot.spacing.max);
   if (snapshot.has_last) {
@@ -289,7 +316,10 @@ void draw_status_bar(const UiState& ui, const Snapshot& snapshot, const WorkerSt
   if (snapshot.dimension > 0)
     right += std::to_string(snapshot.dimension) + "D  " + std::to_string(snapshot.points.size()) + " points  h " +
              format("%.4g", snapshot.settings.spacing) + "  " + to_string(snapshot.settings.variant) +
-             (snapshot.settings.resample ? "" : "  (no resampling)");
+             (!snapshot.settings.resample ? "  (no resampling)"
+              : snapshot.settings.policy.kind == ResamplePolicy::Kind::always
+                  ? ""
+                  : "  resample " + snapshot.settings.policy.to_string());
   const float right_width = ImGui::CalcTextSize(right.c_str()).x;
   ImGui::PushStyleColor(ImGuiCol_Text, level_color(ui.status.level));
   ImGui::PushClipRect(ImGui::GetCursorScreenPos(),

@@ -56,12 +56,17 @@ void SessionRecording<D>::deformed(std::vector<Vec<D>> from, std::vector<Vec<D>>
   if (steps_.empty()) {
     settings_.kind = settings.kind;
     settings_.alpha = settings.alpha;
+    settings_.policy = settings.policy;
   } else if (settings.kind != settings_.kind || settings.alpha != settings_.alpha) {
     spoil("the MLS kind or alpha changed after the first step");
   }
   if (mode_ == Mode::undecided) mode_ = Mode::no_resample;
-  if (mode_ == Mode::resampling && last_ != Op::resample)
-    spoil("a step was taken without resampling between resampled ones");
+  // A step without a resample after it is the policy's choice, which the
+  // replay takes again, as long as it is the same policy.
+  if (mode_ == Mode::resampling && !settings.resample)
+    spoil("resampling was switched off after resampled steps");
+  if (mode_ == Mode::resampling && settings.resample && !(settings.policy == settings_.policy))
+    spoil("the resample policy changed after the first step");
   steps_.push_back(RecordedStep<D>{std::move(from), std::move(to)});
   last_ = Op::deform;
 }
@@ -79,8 +84,14 @@ DeformationHistory<D> SessionRecording<D>::history() const {
 
 template <int D>
 std::string SessionRecording<D>::inexact_reason() const {
-  if (!spoiled_.empty()) return spoiled_;
-  if (mode_ == Mode::resampling && last_ == Op::deform) return "the last step was not followed by a resample";
+  return spoiled_;
+}
+
+template <int D>
+std::string SessionRecording<D>::replay_arguments() const {
+  if (mode_ == Mode::no_resample) return "--no-resample";
+  if (mode_ == Mode::resampling && settings_.policy.kind != ResamplePolicy::Kind::always)
+    return "--resample " + settings_.policy.to_string();
   return {};
 }
 
@@ -94,12 +105,12 @@ Scene<D> recorded_scene(const SessionRecording<D>& recording, const std::string&
   scene.history = recording.history();
   scene.description = "Recorded by amls-editor: " + std::to_string(recording.steps().size()) + " steps in " +
                       std::to_string(scene.history.stages.size()) + " stages. ";
+  const std::string arguments = recording.replay_arguments();
   if (!recording.exact())
     scene.description += "The replay is not exact: " + recording.inexact_reason() + ".";
-  else if (recording.no_resample())
-    scene.description += "`amls deform --no-resample` replays it to the session's final point set.";
   else
-    scene.description += "`amls deform` replays it to the session's final point set.";
+    scene.description += "`amls deform" + (arguments.empty() ? "" : " " + arguments) +
+                         "` replays it to the session's final point set.";
 
   const SurfaceSettings& s = recording.settings();
   scene.shape = recording.shape();

@@ -5,14 +5,18 @@
 //
 // `amls deform` runs R(P0), D1, R, D2, R, ..., DN, R: a resample of the shape's
 // samples, then for each step the MLS deformation from the step's handles to
-// the next ones followed by a resample. The recording keeps every deformation
-// step the session actually took (its handles before and after) and checks
-// that the session's own sequence of resamples (R) and deformations (D) is that
-// one, with one grid, variant, MLS kind and alpha. A session that never
-// resampled is replayed by `amls deform --no-resample` instead. Anything else
-// (the variant toggled after a step, a grid change, resampling switched on and
-// off, a session ending on an unresampled step) is recorded too, but the scene
-// then says that its replay is not exact, and why. No GL.
+// the next ones followed by a resample - or, under a resample policy other
+// than `always`, followed by a resample only where the policy asks for one.
+// The session takes the same decisions on the same points (edit_session.hpp),
+// so the recording keeps every deformation step the session actually took
+// (its handles before and after) and checks what could make the replay differ:
+// one grid, variant, MLS kind, alpha and policy throughout, resampling never
+// switched off or on between steps. The replay passes the policy on the
+// command line (`amls deform --resample auto`, replay_arguments()); a session
+// that never resampled is replayed by `amls deform --no-resample`. Anything
+// else (the variant toggled after a step, a grid change, resampling switched
+// on and off) is recorded too, but the scene then says that its replay is not
+// exact, and why. No GL.
 #include <string>
 #include <vector>
 
@@ -44,7 +48,8 @@ class SessionRecording {
   const SceneShape<D>& shape() const { return shape_; }
   // The grid spacing h the initial points were sampled at.
   double sampled_at() const { return sampled_at_; }
-  // The settings a replay uses: those of the first resample and step.
+  // The settings a replay uses: those of the first resample and step (the
+  // policy that step was taken under among them).
   const SurfaceSettings& settings() const { return settings_; }
   const std::vector<RecordedStep<D>>& steps() const { return steps_; }
   // Nothing was done to the initial points yet: neither a resample nor a step.
@@ -60,6 +65,9 @@ class SessionRecording {
   bool exact() const { return inexact_reason().empty(); }
   std::string inexact_reason() const;
   bool no_resample() const { return mode_ == Mode::no_resample; }
+  // What `amls deform` needs on its command line to replay the session:
+  // "--no-resample", "--resample auto", "--resample every:K", or nothing.
+  std::string replay_arguments() const;
 
  private:
   enum class Mode { undecided, resampling, no_resample };

@@ -33,6 +33,7 @@ struct Snapshot {
   StepStats last;
   PhaseTimings total;
   std::size_t steps = 0;          // deformation steps since the load
+  std::size_t resamples = 0;      // resamples since the load (steps, variant and grid changes)
   std::size_t cancelled = 0;      // edits stopped (between or inside phases) since the worker started
   double steps_per_second = 0.0;  // over the last second of steps
 
@@ -40,7 +41,7 @@ struct Snapshot {
   bool can_redo = false;
   std::size_t recorded_steps = 0;  // what Save Scene would write
   std::string replay_note;         // empty if `amls deform` replays the session exactly
-  bool replay_no_resample = false;
+  std::string replay_arguments;    // what that replay needs on its command line ("--resample auto", ...)
 };
 
 // The worker at this moment.

@@ -18,6 +18,8 @@ void validate(const SurfaceSettings& settings) {
   require_positive(settings.spacing, "grid spacing h");
   require_positive(settings.radius_factor, "radius factor (Delta / h)");
   require_positive(settings.alpha, "MLS alpha");
+  if (settings.policy.kind == ResamplePolicy::Kind::every && settings.policy.every < 1)
+    throw std::invalid_argument("resample every K steps needs K >= 1, got " + std::to_string(settings.policy.every));
 }
 
 }  // namespace amls::editor

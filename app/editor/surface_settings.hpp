@@ -7,6 +7,7 @@
 
 #include "core/mls_deformation.hpp"
 #include "core/point_set.hpp"
+#include "core/resample_policy.hpp"
 #include "core/resampler.hpp"
 #include "core/scene.hpp"
 
@@ -18,7 +19,9 @@ struct SurfaceSettings {
   Variant variant = Variant::exact;
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;
-  bool resample = true;  // resample after every deformation step (off: watch S(P) break)
+  bool resample = true;  // resample as `policy` says (off: only deform, and watch S(P) break)
+  // Which steps resample, as `amls deform --resample` (core/resample_policy.hpp).
+  ResamplePolicy policy;
 
   bool operator==(const SurfaceSettings&) const = default;
   // Whether the grid (h, Delta / h) differs, which needs a new surface.
