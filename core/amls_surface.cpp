@@ -168,10 +168,8 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
   for (std::size_t k = 0; k < n; ++k) {
     const Vec<D> d = neighbourhood.positions[k] - y;
     const double dd = d.squaredNorm();
-    const double a = std::max(0.0, 1.0 - dd * inverse_r2);
-    const double a2 = a * a;
     const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
-    fit.add(d, dd, neighbourhood.normals[k], agrees ? a2 * a2 : 0.0);
+    fit.add(d, dd, neighbourhood.normals[k], agrees ? weight_of_squared_ratio(dd * inverse_r2) : 0.0);
   }
   return fit.solve(parameters_.min_weight);
 }
@@ -205,8 +203,7 @@ void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
         dd[v] += d[a][v] * d[a][v];
       }
     for (int v = 0; v < V; ++v) {
-      const double c = std::max(0.0, 1.0 - dd[v] * inverse_r2);
-      w[v] = (c * c) * (c * c);
+      w[v] = weight_of_squared_ratio(dd[v] * inverse_r2);
       sum_w[v] += w[v];
       sum_dd[v] += w[v] * dd[v];
     }
