@@ -1,9 +1,10 @@
 #include "core/pratt_fit.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+
+#include "core/small_cholesky.hpp"
 
 namespace amls {
 
@@ -71,17 +72,17 @@ template <int D>
 bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
   // Points exactly on a sphere or plane make A singular (that sphere is its
   // null vector, with lambda = 0). A relative diagonal shift of kRegularization
-  // makes it factorizable and moves the solution by about as much.
-  Eigen::LLT<Matrix> llt(a_);
-  if (llt.info() != Eigen::Success)
-    llt.compute(a_ + Matrix::Identity() * (kRegularization * a_.trace() / kBasis));
-  if (llt.info() != Eigen::Success) return false;
-  // A^-1 C once (one triangular solve with kBasis right-hand sides): each
-  // iteration is then a small matrix-vector product.
-  Matrix c = Matrix::Identity();
-  c(0, 0) = c(kBasis - 1, kBasis - 1) = 0.0;
-  c(0, kBasis - 1) = c(kBasis - 1, 0) = -2.0;
-  const Matrix step_matrix = llt.solve(c);
+  // makes it invertible and moves the solution by about as much.
+  Matrix a_inverse;
+  if (!invert_positive_definite<kBasis>(a_, a_inverse) &&
+      !invert_positive_definite<kBasis>(a_ + Matrix::Identity() * (kRegularization * a_.trace() / kBasis), a_inverse))
+    return false;
+  // A^-1 C once, so that each iteration is a small matrix-vector product. C
+  // maps e_0 to -2 e_last, e_last to -2 e_0 and keeps the others (see
+  // apply_constraint()), so A^-1 C is A^-1 with its outer columns swapped and scaled.
+  Matrix step_matrix = a_inverse;
+  step_matrix.col(0) = -2.0 * a_inverse.col(kBasis - 1);
+  step_matrix.col(kBasis - 1) = -2.0 * a_inverse.col(0);
   Coeffs x = start.normalized();
   double previous_step = 0.0;
   for (int it = 0; it < kMaxInverseIterations; ++it) {

@@ -4,6 +4,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/sin_cos_pi.hpp"
+
 namespace amls {
 
 namespace {
@@ -13,9 +15,8 @@ constexpr double kPi = std::numbers::pi;
 double SingleVortex::amplitude(double t) const { return 2.0 * std::cos(kPi * t / period_); }
 
 FlowSample<2> SingleVortex::pattern(const Vec<2>& p) const {
-  double sx, cx, sy, cy;
-  sincos(kPi * p.x(), &sx, &cx);
-  sincos(kPi * p.y(), &sy, &cy);
+  const auto [sx, cx] = sin_cos_pi(p.x());
+  const auto [sy, cy] = sin_cos_pi(p.y());
   // Double angles from the single ones: sin 2a = 2 sin a cos a, cos 2a = 1 - 2 sin^2 a.
   const double s2x = 2 * sx * cx, c2x = 1 - 2 * sx * sx;
   const double s2y = 2 * sy * cy, c2y = 1 - 2 * sy * sy;
@@ -29,10 +30,9 @@ FlowSample<2> SingleVortex::pattern(const Vec<2>& p) const {
 double EnrightField::amplitude(double t) const { return std::cos(kPi * t / period_); }
 
 FlowSample<3> EnrightField::pattern(const Vec<3>& p) const {
-  double sx, cx, sy, cy, sz, cz;
-  sincos(kPi * p.x(), &sx, &cx);
-  sincos(kPi * p.y(), &sy, &cy);
-  sincos(kPi * p.z(), &sz, &cz);
+  const auto [sx, cx] = sin_cos_pi(p.x());
+  const auto [sy, cy] = sin_cos_pi(p.y());
+  const auto [sz, cz] = sin_cos_pi(p.z());
   const double s2x = 2 * sx * cx, s2y = 2 * sy * cy, s2z = 2 * sz * cz;
   const double c2x = 1 - 2 * sx * sx, c2y = 1 - 2 * sy * sy, c2z = 1 - 2 * sz * sz;
   FlowSample<3> f;
