@@ -80,7 +80,7 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       flags_.resize(field_.slots(), 0);
     }
     for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
-      if (((v.array() == lo.array()) || (v.array() == hi.array())).count() == D) return;  // a block corner
+      if (((v.array() == lo.array()) || (v.array() == hi.array())).count() >= 2) return;  // on a corner or edge of the block
       const std::uint32_t slot = bricks_around.slot(v);
       if (flags_[slot] & kNeeded) return;
       flags_[slot] |= kNeeded;
