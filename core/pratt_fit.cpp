@@ -38,6 +38,25 @@ constexpr int kMaxInverseIterations = 12;
 constexpr double kConverged = 1e-12;
 constexpr double kRegularization = 1e-13;
 
+// Whether points whose second moment about p is `scatter` span a line (2D) or
+// a plane (3D): its second-largest eigenvalue is not negligible next to the
+// largest. By invariants rather than an eigensolver: in 3D the sum of the
+// principal 2 x 2 minors over the squared trace is that ratio within a factor
+// of 27, plenty for a threshold that only separates zero from rounding noise.
+template <int D>
+bool spans_hyperplane(const Mat<D>& scatter) {
+  const double trace = scatter.trace();
+  if (!(trace > 0.0)) return false;
+  if constexpr (D == 2) {
+    return true;  // the largest of two eigenvalues is positive
+  } else {
+    const Mat<D>& s = scatter;
+    const double minors = s(0, 0) * s(1, 1) - s(0, 1) * s(1, 0) + s(0, 0) * s(2, 2) - s(0, 2) * s(2, 0) +
+                          s(1, 1) * s(2, 2) - s(1, 2) * s(2, 1);
+    return minors > kFlatness * trace * trace;
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -46,10 +65,7 @@ FitStatus PrattFit<D>::solve(const Vec<D>& carried, Vec<D>& normal) {
 
   // The neighbourhood must span a line (2D) or a plane (3D); otherwise the fit's
   // normal is not determined by the data.
-  Eigen::SelfAdjointEigenSolver<Mat<D>> spread;
-  spread.computeDirect(scatter_, Eigen::EigenvaluesOnly);
-  const auto& ev = spread.eigenvalues();  // ascending
-  if (!(ev[1] > kFlatness * ev[D - 1]) || !(ev[D - 1] > 0.0)) return FitStatus::degenerate;
+  if (!spans_hyperplane<D>(scatter_)) return FitStatus::degenerate;
 
   Coeffs start = Coeffs::Zero();
   start.template segment<D>(1) = carried;
