@@ -185,42 +185,54 @@ void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
     return;
   }
   // Structure of arrays over the corners, so that each line below is one
-  // vector operation across them.
-  double y[D][V];
+  // vector operation across them. Coordinates are taken from the cube's
+  // centre c, with q = p - c for a neighbour p and y the corner: then
+  // d = q - y, |d|^2 = |q|^2 - 2 q.y + |y|^2, sum w d = sum w q - y sum w and
+  // sum w d.n = sum w q.n - y . sum w n, so the loop needs no d and one
+  // product for d.n rather than D. (All terms are within a few Delta of 0, so
+  // nothing cancels badly.)
+  Vec<D> centre = Vec<D>::Zero();
+  for (const Vec<D>& corner : corners) centre += corner;
+  centre /= V;
+  double y[D][V], yy[V] = {};
   for (int v = 0; v < V; ++v)
-    for (int a = 0; a < D; ++a) y[a][v] = corners[v][a];
-  double sum_w[V] = {}, sum_dn[V] = {}, sum_dd[V] = {}, sum_d[D][V] = {}, sum_n[D][V] = {};
+    for (int a = 0; a < D; ++a) {
+      y[a][v] = corners[v][a] - centre[a];
+      yy[v] += y[a][v] * y[a][v];
+    }
+  double sum_w[V] = {}, sum_qn[V] = {}, sum_dd[V] = {}, sum_q[D][V] = {}, sum_n[D][V] = {};
   const double inverse_r2 = 1.0 / (radius_ * radius_);
   const std::size_t n = neighbourhood.positions.size();
   for (std::size_t k = 0; k < n; ++k) {
-    const Vec<D>& p = neighbourhood.positions[k];
+    const Vec<D> q = neighbourhood.positions[k] - centre;
     const Vec<D>& normal = neighbourhood.normals[k];
-    double d[D][V], dd[V], w[V];
-    for (int v = 0; v < V; ++v) dd[v] = 0.0;
+    const double qq = q.squaredNorm();
+    const double qn = q.dot(normal);
+    double dd[V], w[V];
+    for (int v = 0; v < V; ++v) dd[v] = qq + yy[v];
     for (int a = 0; a < D; ++a)
-      for (int v = 0; v < V; ++v) {
-        d[a][v] = p[a] - y[a][v];
-        dd[v] += d[a][v] * d[a][v];
-      }
+      for (int v = 0; v < V; ++v) dd[v] -= 2.0 * q[a] * y[a][v];
     for (int v = 0; v < V; ++v) {
       w[v] = weight_of_squared_ratio(dd[v] * inverse_r2);
       sum_w[v] += w[v];
       sum_dd[v] += w[v] * dd[v];
+      sum_qn[v] += w[v] * qn;
     }
     for (int a = 0; a < D; ++a)
       for (int v = 0; v < V; ++v) {
-        sum_d[a][v] += w[v] * d[a][v];
+        sum_q[a][v] += w[v] * q[a];
         sum_n[a][v] += w[v] * normal[a];
-        sum_dn[v] += w[v] * d[a][v] * normal[a];
       }
   }
   for (int v = 0; v < V; ++v) {
-    Vec<D> sd, sn;
+    Vec<D> sum_d, sn;
+    double sum_dn = sum_qn[v];
     for (int a = 0; a < D; ++a) {
-      sd[a] = sum_d[a][v];
+      sum_d[a] = sum_q[a][v] - y[a][v] * sum_w[v];
       sn[a] = sum_n[a][v];
+      sum_dn -= y[a][v] * sn[a];
     }
-    out[v] = GradientFit<D>(sum_w[v], sd, sn, sum_dn[v], sum_dd[v]).solve(parameters_.min_weight);
+    out[v] = GradientFit<D>(sum_w[v], sum_d, sn, sum_dn, sum_dd[v]).solve(parameters_.min_weight);
   }
 }
 
