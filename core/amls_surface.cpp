@@ -29,7 +29,15 @@ void AmlsSurface<D>::set_points(PointSet<D> points) {
 
 template <int D>
 void AmlsSurface<D>::hash_points() {
-  index_.build(points_.positions, grid_.origin(), radius_);
+  ThreadPool serial(1);
+  hash_points(serial);
+}
+
+template <int D>
+void AmlsSurface<D>::hash_points(ThreadPool& pool) {
+  // Not hashed until the index is whole (the build can throw, or be cancelled).
+  hashed_ = ready_ = false;
+  index_.build(points_.positions, grid_.origin(), radius_, pool);
   // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
   const std::vector<std::uint32_t>& order = index_.order();
   PointSet<D> sorted;
@@ -43,7 +51,7 @@ void AmlsSurface<D>::hash_points() {
 
 template <int D>
 NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
-  if (!hashed_) hash_points();
+  if (!hashed_) hash_points(pool);
   const std::size_t n = points_.size();
   pseudo_normals_.resize(n);
   std::vector<FitStatus> status(n);

@@ -80,8 +80,9 @@ class AmlsSurface {
   }
   void set_points(PointSet<D> points);
 
-  // Hash(): rebuilds the neighbour index.
+  // Hash(): rebuilds the neighbour index (on `pool`: the same for any thread count).
   void hash_points();
+  void hash_points(ThreadPool& pool);
   // Update_Normals(): the pseudo-normal of every point by the Pratt fit, oriented
   // to agree with the normal it carries; where the fit fails, the carried normal.
   NormalStats update_normals(ThreadPool& pool);

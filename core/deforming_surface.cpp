@@ -25,7 +25,7 @@ DeformingSurface<D>::DeformingSurface(const Grid<D>& grid, const AmlsParameters&
 template <int D>
 void DeformingSurface<D>::set_points(PointSet<D> points) {
   surface_.set_points(std::move(points));
-  surface_.hash_points();
+  surface_.hash_points(pool_);
 }
 
 template <int D>
@@ -49,7 +49,7 @@ StepStats DeformingSurface<D>::step(const Deformation<D>& deformation, double t0
   Stopwatch clock;
   deformation.deform(surface_.mutable_points(), t0, t1, pool_);
   stats.timings.deform = clock.lap();
-  surface_.hash_points();
+  surface_.hash_points(pool_);
   stats.timings.hash = clock.lap();
   stats.points_after = surface_.points().size();
   return stats;
@@ -61,7 +61,7 @@ StepStats DeformingSurface<D>::resample_only() {
   stats.points_before = surface_.points().size();
   resample_phases(stats);
   Stopwatch clock;
-  surface_.hash_points();
+  surface_.hash_points(pool_);
   stats.timings.hash = clock.lap();
   stats.points_after = surface_.points().size();
   return stats;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/radix_sort.hpp"
+
 namespace amls {
 
 namespace {
@@ -44,30 +46,52 @@ std::uint64_t morton_code(const IVec<D>& cell) {
 
 template <int D>
 void PointIndex<D>::build(const std::vector<Vec<D>>& positions, const Vec<D>& origin, double cell_size) {
+  ThreadPool serial(1);
+  build(positions, origin, cell_size, serial);
+}
+
+template <int D>
+void PointIndex<D>::build(const std::vector<Vec<D>>& positions, const Vec<D>& origin, double cell_size,
+                          ThreadPool& pool) {
   if (positions.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("too many points for the index: " + std::to_string(positions.size()));
   cells_.emplace(origin, cell_size);
+  const Grid<D>& cells = *cells_;
 
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Vec<D>& p = positions[i];
-    if (!p.allFinite()) throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
-    if (!cells_->contains_with_margin(p, 2))
-      throw std::invalid_argument("point " + std::to_string(i) + " lies too far from the grid's origin for its spacing");
-    keyed[i] = {morton_code<D>(cells_->cell_of(p)), static_cast<std::uint32_t>(i)};
+  // Each block stops at its first invalid point, and the lowest of those is
+  // reported: the same error for any thread count.
+  constexpr std::size_t kAllValid = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> first_invalid(static_cast<std::size_t>(pool.threads()), kAllValid);
+  keyed_.resize(positions.size());
+  pool.parallel_for(positions.size(), [&](std::size_t begin, std::size_t end, int block) {
+    std::size_t& invalid = first_invalid[static_cast<std::size_t>(block)];
+    for (std::size_t i = begin; i < end && invalid == kAllValid; ++i) {
+      const Vec<D>& p = positions[i];
+      if (!p.allFinite() || !cells.contains_with_margin(p, 2)) invalid = i;
+      else keyed_[i] = {morton_code<D>(cells.cell_of(p)), static_cast<std::uint32_t>(i)};
+    }
+  });
+  if (const std::size_t i = *std::min_element(first_invalid.begin(), first_invalid.end()); i != kAllValid) {
+    throw std::invalid_argument("point " + std::to_string(i) +
+                                (positions[i].allFinite() ? " lies too far from the grid's origin for its spacing"
+                                                          : " has a non-finite coordinate"));
   }
-  // Sorting (code, id) pairs makes the order, and so every query's order, deterministic.
-  std::sort(keyed.begin(), keyed.end());
+  // Sorting by code, ids ascending within a code, makes the order, and so
+  // every query's order, deterministic.
+  radix_sort_by_key(keyed_, sort_scratch_);
 
-  positions_.resize(keyed.size());
-  ids_.resize(keyed.size());
+  positions_.resize(keyed_.size());
+  ids_.resize(keyed_.size());
   runs_.clear();
-  runs_.reserve(keyed.size());
-  for (std::size_t k = 0; k < keyed.size(); ++k) {
-    ids_[k] = keyed[k].second;
-    positions_[k] = positions[keyed[k].second];
-    auto [run, inserted] = runs_.try_emplace(Grid<D>::key(cells_->cell_of(positions_[k])));
-    if (inserted) run->begin = static_cast<std::uint32_t>(k);
+  Run* run = nullptr;
+  for (std::size_t k = 0; k < keyed_.size(); ++k) {
+    ids_[k] = keyed_[k].second;
+    positions_[k] = positions[keyed_[k].second];
+    // A code names one cell: a run starts where the code changes.
+    if (k == 0 || keyed_[k].first != keyed_[k - 1].first) {
+      run = runs_.try_emplace(Grid<D>::key(cells.cell_of(positions_[k]))).first;
+      run->begin = static_cast<std::uint32_t>(k);
+    }
     run->end = static_cast<std::uint32_t>(k + 1);
   }
 }

@@ -5,10 +5,12 @@
 // a query inspects at most 3^D cells whatever the grid spacing.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/flat_hash_map.hpp"
 #include "core/grid.hpp"
+#include "core/thread_pool.hpp"
 #include "core/vec.hpp"
 
 namespace amls {
@@ -18,8 +20,10 @@ class PointIndex {
  public:
   // Buckets `positions` in cells of width `cell_size` anchored at `origin`.
   // Throws std::invalid_argument for non-finite positions or positions too far
-  // from the origin for packed cell keys.
+  // from the origin for packed cell keys (naming the first such point).
   void build(const std::vector<Vec<D>>& positions, const Vec<D>& origin, double cell_size);
+  // The same, computing the cells on `pool`: the same index for any thread count.
+  void build(const std::vector<Vec<D>>& positions, const Vec<D>& origin, double cell_size, ThreadPool& pool);
 
   std::size_t size() const { return ids_.size(); }
   double cell_size() const { return cells_ ? cells_->spacing() : 0.0; }
@@ -81,6 +85,9 @@ class PointIndex {
   std::vector<Vec<D>> positions_;  // sorted by cell
   std::vector<std::uint32_t> ids_;  // original index of each sorted position
   FlatHashMap<Run> runs_;
+  // (Morton code of the cell, id) of every point, and the sort's working
+  // space: kept so that rebuilding every step does not allocate.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed_, sort_scratch_;
 };
 
 extern template class PointIndex<2>;

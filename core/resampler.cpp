@@ -1,8 +1,10 @@
 #include "core/resampler.hpp"
 
-#include <array>
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -36,6 +38,39 @@ IVec<D> corner_offset(int v) {
   return offset;
 }
 
+// kNeededBytes[m]: the flags of 8 consecutive slots, kNeeded where bit i of m
+// is set, as they lie in memory: expands a brick's mask 8 slots at a time.
+constexpr std::array<std::uint64_t, 256> kNeededBytes = [] {
+  static_assert(std::endian::native == std::endian::little);
+  std::array<std::uint64_t, 256> bytes{};
+  for (std::uint64_t m = 0; m < 256; ++m)
+    for (int i = 0; i < 8; ++i) bytes[m] |= ((m >> i) & 1) * std::uint64_t{kNeeded} << (8 * i);
+  return bytes;
+}();
+
+// The walk's vertices around a point as bits of the 2^D bricks its box
+// spans: of[o][k] has bit l set when the vertex with local index l of brick k
+// of the block (see VertexField::Block::brick) is in the walk of a point whose
+// box's lowest vertex has local index o. Marking a point is then 2^D ORs.
+template <int D>
+struct WalkMasks {
+  using Mask = typename Resampler<D>::BrickMask;
+  std::array<std::array<Mask, 1 << D>, VertexField<D>::kBrickVolume> of{};
+
+  WalkMasks() {
+    for (std::uint32_t o = 0; o < VertexField<D>::kBrickVolume; ++o) {
+      const IVec<D> lo = VertexField<D>::vertex_of_local(o);
+      const IVec<D> hi = lo.array() + (kWalkHigh - kWalkLow);
+      for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
+        if (((v.array() == lo.array()) || (v.array() == hi.array())).count() >= 2) return;  // on a corner or edge of the block
+        int brick = 0;
+        for (int a = D - 1; a >= 0; --a) brick = brick * 2 + static_cast<int>(v[a] >> VertexField<D>::kBrickShift);
+        of[o][static_cast<std::size_t>(brick)] |= static_cast<Mask>(Mask{1} << VertexField<D>::local_index(v));
+      });
+    }
+  }
+};
+
 template <int D>
 std::uint8_t sign_flags(const Evaluation<D>& e) {
   if (!e.defined) return 0;
@@ -58,8 +93,9 @@ template <int D>
 void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
   const Grid<D>& grid = surface.grid();
   field_.clear();
-  flags_.clear();
+  needed_.clear();
   stats_ = ResampleStats{};
+  static const WalkMasks<D> walk;
   // Points come in cell order, so consecutive points often share their cell
   // (nothing new to mark) or their bricks (no new map lookups).
   IVec<D> previous_cell = IVec<D>::Constant(std::numeric_limits<std::int64_t>::min());
@@ -73,19 +109,21 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
     if (cell == previous_cell) continue;
     previous_cell = cell;
     const IVec<D> lo = cell.array() + kWalkLow;
-    const IVec<D> hi = cell.array() + kWalkHigh;
     if (VertexField<D>::brick_of(lo) != block_base) {
       bricks_around = field_.block(lo);
       block_base = VertexField<D>::brick_of(lo);
-      flags_.resize(field_.slots(), 0);
+      needed_.resize(field_.bricks(), 0);
     }
-    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
-      if (((v.array() == lo.array()) || (v.array() == hi.array())).count() >= 2) return;  // on a corner or edge of the block
-      const std::uint32_t slot = bricks_around.slot(v);
-      if (flags_[slot] & kNeeded) return;
-      flags_[slot] |= kNeeded;
-      ++stats_.vertices;
-    });
+    const auto& masks = walk.of[VertexField<D>::local_index(lo)];
+    for (int k = 0; k < (1 << D); ++k) needed_[bricks_around.brick(k)] |= masks[static_cast<std::size_t>(k)];
+  }
+  flags_.resize(field_.slots());
+  for (std::size_t b = 0; b < needed_.size(); ++b) {
+    const BrickMask needed = needed_[b];
+    stats_.vertices += static_cast<std::size_t>(std::popcount(needed));
+    std::uint8_t* brick_flags = flags_.data() + b * VertexField<D>::kBrickVolume;
+    for (std::uint32_t l = 0; l < VertexField<D>::kBrickVolume; l += 8)
+      std::memcpy(brick_flags + l, &kNeededBytes[(needed >> l) & 0xff], 8);
   }
 
   // One gather per brick serves its vertices here and, in locate_crossings(),
@@ -140,7 +178,9 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       });
     }
   });
-  for (const std::uint8_t f : flags_) stats_.undefined_vertices += (f & kNeeded) && !(f & kDefined);
+  std::size_t undefined = 0;  // in a local, which the byte stores cannot alias
+  for (const std::uint8_t f : flags_) undefined += (f & (kNeeded | kDefined)) == kNeeded ? 1 : 0;
+  stats_.undefined_vertices = undefined;
   function_updated_ = true;
 }
 

@@ -13,6 +13,12 @@ namespace {
 // per-call set-up stay a negligible share of the work.
 constexpr double kSubrangeSeconds = 1e-3;
 
+// How long a waiting thread spins before it blocks. Longer than the serial
+// stretches between the loops of a step (tens of microseconds), so that a step
+// runs without sleeping; short enough that an idle pool (the editor's between
+// two edits) goes to sleep at once on a human scale.
+constexpr std::chrono::microseconds kSpin{500};
+
 }  // namespace
 
 ThreadPool::ThreadPool(int threads) {
@@ -21,12 +27,37 @@ ThreadPool::ThreadPool(int threads) {
 }
 
 ThreadPool::~ThreadPool() {
-  {
-    std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  wake_.notify_all();
+  stopping_.store(true);
+  notify(start_);
   for (auto& w : workers_) w.join();
+}
+
+template <typename Ready>
+void ThreadPool::await(Signal& signal, Ready&& ready) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point deadline = Clock::now() + kSpin;
+  for (int spins = 1;; ++spins) {
+    if (ready()) return;
+    // Yielding rather than pausing: on a busy machine a spinning thread must
+    // not keep the core from the thread it waits for (or from other work);
+    // on an idle one the yield returns at once.
+    std::this_thread::yield();
+    if (spins % 64 == 0 && Clock::now() > deadline) break;
+  }
+  // Counting ourselves before the last look (both sequentially consistent)
+  // means that whoever makes `ready` true afterwards sees a sleeper and wakes
+  // us through the mutex, so the wake-up cannot be lost.
+  std::unique_lock lock(mutex_);
+  signal.sleepers.fetch_add(1);
+  signal.blocked.wait(lock, ready);
+  signal.sleepers.fetch_sub(1);
+}
+
+void ThreadPool::notify(Signal& signal) {
+  if (signal.sleepers.load() == 0) return;
+  // Taking the mutex orders us after a sleeper's last look: it is then waiting.
+  { std::lock_guard lock(mutex_); }
+  signal.blocked.notify_all();
 }
 
 void ThreadPool::run_range(const Body& body, std::size_t begin, std::size_t end, int block) {
@@ -67,23 +98,20 @@ void ThreadPool::run_block(int block) {
   }
 }
 
-void ThreadPool::parallel_for(std::size_t n, const Body& body) {
+void ThreadPool::parallel_for(std::size_t n, Body body) {
   cancelled_.store(false, std::memory_order_relaxed);
   if (workers_.empty() || n < 2) {
     run_range(body, 0, n, 0);
   } else {
-    {
-      std::lock_guard lock(mutex_);
-      body_ = &body;
-      n_ = n;
-      pending_ = static_cast<int>(workers_.size());
-      error_ = nullptr;
-      ++generation_;
-    }
-    wake_.notify_all();
+    // Workers are all idle here (the last loop waited for them), so these
+    // plain writes race with nothing; the generation's store publishes them.
+    body_ = &body;
+    n_ = n;
+    pending_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
+    generation_.fetch_add(1);
+    notify(start_);
     run_block(0);
-    std::unique_lock lock(mutex_);
-    done_.wait(lock, [this] { return pending_ == 0; });
+    await(done_, [this] { return pending_.load() == 0; });
     body_ = nullptr;
     if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
   }
@@ -91,20 +119,15 @@ void ThreadPool::parallel_for(std::size_t n, const Body& body) {
 }
 
 void ThreadPool::worker_loop(int block) {
-  std::size_t seen = 0;
+  std::uint64_t seen = 0;
   while (true) {
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
-      if (stopping_) return;
-      seen = generation_;
-    }
+    await(start_, [&] { return stopping_.load() || generation_.load() != seen; });
+    if (stopping_.load()) return;
+    seen = generation_.load();
     run_block(block);
-    {
-      std::lock_guard lock(mutex_);
-      --pending_;
-    }
-    done_.notify_one();
+    // The decrement releases the block's writes to the owner, which reads
+    // pending_ before it returns.
+    if (pending_.fetch_sub(1) == 1) notify(done_);
   }
 }
 

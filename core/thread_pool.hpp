@@ -6,13 +6,20 @@
 // Running work can be stopped inside a loop: while the pool has a cancellation
 // check (set_cancel_check, or a CancelScope), each block runs as consecutive
 // sub-ranges and the check is polled before each one.
+//
+// Loops can be short (a 2D step runs several of about 100 microseconds each),
+// so the hand-offs avoid the kernel where they can: a waiting thread spins for
+// a bounded time, watching an atomic, before it blocks on a condition variable,
+// and the other side only takes the mutex to wake it when someone blocked.
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -26,7 +33,21 @@ class Cancelled : public std::exception {
 
 class ThreadPool {
  public:
-  using Body = std::function<void(std::size_t, std::size_t, int)>;
+  // A reference to the loop body, body(begin, end, block), valid for the
+  // parallel_for call: unlike a std::function it never allocates.
+  class Body {
+   public:
+    template <typename Fn, typename = std::enable_if_t<!std::is_same_v<std::decay_t<Fn>, Body>>>
+    Body(Fn&& fn)  // NOLINT(google-explicit-constructor): lambdas convert implicitly, as to std::function
+        : fn_(const_cast<void*>(static_cast<const void*>(&fn))), call_([](void* f, std::size_t b, std::size_t e, int k) {
+            (*static_cast<std::remove_reference_t<Fn>*>(f))(b, e, k);
+          }) {}
+    void operator()(std::size_t begin, std::size_t end, int block) const { call_(fn_, begin, end, block); }
+
+   private:
+    void* fn_;
+    void (*call_)(void*, std::size_t, std::size_t, int);
+  };
   // True once the work should stop. Called concurrently from every thread of the
   // pool, so it must be thread-safe, and cheap (it runs about every millisecond).
   using CancelCheck = std::function<bool()>;
@@ -51,7 +72,7 @@ class ThreadPool {
   // sub-range; once it returns true every thread stops at its next poll and
   // parallel_for throws Cancelled (after all of them stopped; a block's own
   // exception wins). What the body wrote until then stays written.
-  void parallel_for(std::size_t n, const Body& body);
+  void parallel_for(std::size_t n, Body body);
 
   // For serial loops of the pool's owner: throws Cancelled if the check says
   // stop (call it every few thousand items).
@@ -63,19 +84,30 @@ class ThreadPool {
   void set_cancel_check(CancelCheck check) { check_ = std::move(check); }
 
  private:
+  // One direction of hand-off: a thread waits until `ready` holds.
+  struct Signal {
+    std::condition_variable blocked;
+    std::atomic<int> sleepers = 0;  // threads blocked (or about to block) on `blocked`
+  };
+  template <typename Ready>
+  void await(Signal& signal, Ready&& ready);
+  // Wakes the threads blocked on `signal`; call after making their condition true.
+  void notify(Signal& signal);
+
   void worker_loop(int block);
   void run_block(int block);
   void run_range(const Body& body, std::size_t begin, std::size_t end, int block);
 
   std::vector<std::thread> workers_;
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  std::condition_variable done_;
+  std::mutex mutex_;  // guards error_ and the blocking half of await()
+  Signal start_;      // workers wait for a new generation (or stopping_)
+  Signal done_;       // the owner waits for pending_ == 0
+  // The current loop, published by the generation's release store.
   const Body* body_ = nullptr;
   std::size_t n_ = 0;
-  std::size_t generation_ = 0;
-  int pending_ = 0;
-  bool stopping_ = false;
+  std::atomic<std::uint64_t> generation_ = 0;
+  std::atomic<int> pending_ = 0;  // workers still running the current generation
+  std::atomic<bool> stopping_ = false;
   std::exception_ptr error_;
   CancelCheck check_;
   // Set by the first thread whose poll said stop, so that the others stop at their next poll.
