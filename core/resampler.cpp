@@ -22,14 +22,6 @@ constexpr std::uint8_t kNeeded = 1;  // the walk reads this vertex: Update_Funct
 constexpr std::uint8_t kDefined = 2;
 constexpr std::uint8_t kPositive = 4;  // F >= 0 (a zero counts as positive)
 
-// The walk around a point in cell I covers the edges between the vertices
-// [I - 1, I + 2]^D: the 3^D cells centred on I.
-constexpr std::int64_t kWalkLow = -1;
-constexpr std::int64_t kWalkHigh = 2;
-
-// Points between two cancellation polls in a serial loop (well under a millisecond).
-constexpr std::size_t kPollInterval = 4096;
-
 // Corner v of the unit cube: bit a of v is the offset along axis a.
 template <int D>
 IVec<D> corner_offset(int v) {
@@ -47,29 +39,6 @@ constexpr std::array<std::uint64_t, 256> kNeededBytes = [] {
     for (int i = 0; i < 8; ++i) bytes[m] |= ((m >> i) & 1) * std::uint64_t{kNeeded} << (8 * i);
   return bytes;
 }();
-
-// The walk's vertices around a point as bits of the 2^D bricks its box
-// spans: of[o][k] has bit l set when the vertex with local index l of brick k
-// of the block (see VertexField::Block::brick) is in the walk of a point whose
-// box's lowest vertex has local index o. Marking a point is then 2^D ORs.
-template <int D>
-struct WalkMasks {
-  using Mask = typename Resampler<D>::BrickMask;
-  std::array<std::array<Mask, 1 << D>, VertexField<D>::kBrickVolume> of{};
-
-  WalkMasks() {
-    for (std::uint32_t o = 0; o < VertexField<D>::kBrickVolume; ++o) {
-      const IVec<D> lo = VertexField<D>::vertex_of_local(o);
-      const IVec<D> hi = lo.array() + (kWalkHigh - kWalkLow);
-      for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& v) {
-        if (((v.array() == lo.array()) || (v.array() == hi.array())).count() >= 2) return;  // on a corner or edge of the block
-        int brick = 0;
-        for (int a = D - 1; a >= 0; --a) brick = brick * 2 + static_cast<int>(v[a] >> VertexField<D>::kBrickShift);
-        of[o][static_cast<std::size_t>(brick)] |= static_cast<Mask>(Mask{1} << VertexField<D>::local_index(v));
-      });
-    }
-  }
-};
 
 template <int D>
 std::uint8_t sign_flags(const Evaluation<D>& e) {
@@ -93,33 +62,11 @@ template <int D>
 void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
   const Grid<D>& grid = surface.grid();
   field_.clear();
-  needed_.clear();
   stats_ = ResampleStats{};
-  static const WalkMasks<D> walk;
-  // Points come in cell order, so consecutive points often share their cell
-  // (nothing new to mark) or their bricks (no new map lookups).
-  IVec<D> previous_cell = IVec<D>::Constant(std::numeric_limits<std::int64_t>::min());
-  IVec<D> block_base = previous_cell;
-  typename VertexField<D>::Block bricks_around;
-  const std::vector<Vec<D>>& positions = surface.points().positions;
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    // The one serial pass here: a cancel must not wait for it on a large surface.
-    if (i % kPollInterval == 0) pool.poll_cancel();
-    const IVec<D> cell = grid.cell_of(positions[i]);
-    if (cell == previous_cell) continue;
-    previous_cell = cell;
-    const IVec<D> lo = cell.array() + kWalkLow;
-    if (VertexField<D>::brick_of(lo) != block_base) {
-      bricks_around = field_.block(lo);
-      block_base = VertexField<D>::brick_of(lo);
-      needed_.resize(field_.bricks(), 0);
-    }
-    const auto& masks = walk.of[VertexField<D>::local_index(lo)];
-    for (int k = 0; k < (1 << D); ++k) needed_[bricks_around.brick(k)] |= masks[static_cast<std::size_t>(k)];
-  }
+  walk_.mark(grid, surface.points().positions, field_, pool);
   flags_.resize(field_.slots());
-  for (std::size_t b = 0; b < needed_.size(); ++b) {
-    const BrickMask needed = needed_[b];
+  for (std::size_t b = 0; b < walk_.needed().size(); ++b) {
+    const typename WalkMarks<D>::Mask needed = walk_.needed()[b];
     stats_.vertices += static_cast<std::size_t>(std::popcount(needed));
     std::uint8_t* brick_flags = flags_.data() + b * VertexField<D>::kBrickVolume;
     for (std::uint32_t l = 0; l < VertexField<D>::kBrickVolume; l += 8)

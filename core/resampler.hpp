@@ -35,11 +35,11 @@
 // parallel.
 #include <cstdint>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "core/amls_surface.hpp"
 #include "core/vertex_field.hpp"
+#include "core/walk_marks.hpp"
 
 namespace amls {
 
@@ -77,9 +77,6 @@ class Resampler {
   // The value of F cached at a vertex by the last update_function(), if any.
   const Evaluation<D>* vertex_value(const IVec<D>& vertex) const;
 
-  // One bit per vertex of a brick, by local index (VertexField::local_index).
-  using BrickMask = std::conditional_t<D == 2, std::uint16_t, std::uint64_t>;
-
  private:
   struct Crossing {
     std::uint32_t from;  // slot of the edge's lower vertex
@@ -103,7 +100,7 @@ class Resampler {
   std::vector<std::vector<std::uint32_t>> brick_points_;  // per thread block: point ids
   std::vector<BrickPoints> brick_range_;                   // per brick
   std::vector<Evaluation<D>> values_;   // slot -> F (valid where needed)
-  std::vector<BrickMask> needed_;       // brick -> its vertices the walk reads
+  WalkMarks<D> walk_;                   // the vertices the walk reads
   std::vector<std::uint8_t> flags_;     // slot -> NEEDED | DEFINED | POSITIVE
   std::vector<Crossing> crossings_;
   std::vector<std::uint32_t> closest_crossing_;  // slot -> the crossing HAVECLOSEPOINT keeps there

@@ -23,7 +23,7 @@ constexpr std::chrono::microseconds kSpin{500};
 
 ThreadPool::ThreadPool(int threads) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (int block = 1; block < threads; ++block) workers_.emplace_back([this, block] { worker_loop(block); });
+  for (int worker = 1; worker < threads; ++worker) workers_.emplace_back([this] { worker_loop(); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -103,31 +103,45 @@ void ThreadPool::parallel_for(std::size_t n, Body body) {
   if (workers_.empty() || n < 2) {
     run_range(body, 0, n, 0);
   } else {
-    // Workers are all idle here (the last loop waited for them), so these
-    // plain writes race with nothing; the generation's store publishes them.
+    // No block of the last loop runs any more and none of this one can be
+    // claimed before the store to loop_, which publishes these plain writes.
     body_ = &body;
     n_ = n;
-    pending_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
-    generation_.fetch_add(1);
+    finished_.store(0, std::memory_order_relaxed);
+    const std::uint32_t generation = static_cast<std::uint32_t>(loop_.load() >> 32) + 1;
+    loop_.store(std::uint64_t{generation} << 32);
     notify(start_);
-    run_block(0);
-    await(done_, [this] { return pending_.load() == 0; });
+    run_blocks(generation);
+    // Every block is claimed; wait for those other threads are running.
+    await(done_, [this] { return finished_.load() == threads(); });
     body_ = nullptr;
     if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
   }
   if (cancelled_.load(std::memory_order_relaxed)) throw Cancelled();
 }
 
-void ThreadPool::worker_loop(int block) {
-  std::uint64_t seen = 0;
+void ThreadPool::run_blocks(std::uint32_t generation) {
+  const auto blocks = static_cast<std::uint32_t>(threads());
+  for (std::uint64_t loop = loop_.load();;) {
+    // Claim the next block, unless this loop is over (then loop_ names a later one).
+    do {
+      if (static_cast<std::uint32_t>(loop >> 32) != generation || static_cast<std::uint32_t>(loop) >= blocks) return;
+    } while (!loop_.compare_exchange_weak(loop, loop + 1));
+    run_block(static_cast<int>(static_cast<std::uint32_t>(loop)));
+    // The increment releases the block's writes to the owner, which reads
+    // finished_ before it returns.
+    if (finished_.fetch_add(1) + 1 == threads()) notify(done_);
+    loop = loop_.load();
+  }
+}
+
+void ThreadPool::worker_loop() {
+  std::uint32_t seen = 0;
   while (true) {
-    await(start_, [&] { return stopping_.load() || generation_.load() != seen; });
+    await(start_, [&] { return stopping_.load() || static_cast<std::uint32_t>(loop_.load() >> 32) != seen; });
     if (stopping_.load()) return;
-    seen = generation_.load();
-    run_block(block);
-    // The decrement releases the block's writes to the owner, which reads
-    // pending_ before it returns.
-    if (pending_.fetch_sub(1) == 1) notify(done_);
+    seen = static_cast<std::uint32_t>(loop_.load() >> 32);
+    run_blocks(seen);
   }
 }
 

@@ -11,6 +11,9 @@
 // so the hand-offs avoid the kernel where they can: a waiting thread spins for
 // a bounded time, watching an atomic, before it blocks on a condition variable,
 // and the other side only takes the mutex to wake it when someone blocked.
+// Blocks are claimed, not assigned: a thread that is late (asleep, or off its
+// core on a busy machine) finds its block done by the others rather than
+// holding up the loop. Which thread runs a block changes nothing in it.
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -60,9 +63,9 @@ class ThreadPool {
 
   int threads() const { return static_cast<int>(workers_.size()) + 1; }
 
-  // Calls body for `threads()` contiguous blocks covering [0, n), the calling
-  // thread taking block 0, and returns when all are done. The first exception
-  // thrown by a block is rethrown here.
+  // Calls body for `threads()` contiguous blocks covering [0, n), each run
+  // by one thread (the calling thread too), and returns when all are done.
+  // The first exception thrown by a block is rethrown here.
   //
   // Without a cancellation check, body(begin, end, block) runs once per
   // non-empty block. With one, each block runs as consecutive sub-ranges
@@ -94,19 +97,22 @@ class ThreadPool {
   // Wakes the threads blocked on `signal`; call after making their condition true.
   void notify(Signal& signal);
 
-  void worker_loop(int block);
+  void worker_loop();
+  // Claims and runs blocks of loop `generation` until none is left.
+  void run_blocks(std::uint32_t generation);
   void run_block(int block);
   void run_range(const Body& body, std::size_t begin, std::size_t end, int block);
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;  // guards error_ and the blocking half of await()
-  Signal start_;      // workers wait for a new generation (or stopping_)
-  Signal done_;       // the owner waits for pending_ == 0
-  // The current loop, published by the generation's release store.
+  Signal start_;      // workers wait for a new loop (or stopping_)
+  Signal done_;       // the owner waits for finished_ == threads()
+  // The current loop, published by the store to loop_.
   const Body* body_ = nullptr;
   std::size_t n_ = 0;
-  std::atomic<std::uint64_t> generation_ = 0;
-  std::atomic<int> pending_ = 0;  // workers still running the current generation
+  // The loop's generation (high 32 bits) and its next unclaimed block (low 32).
+  std::atomic<std::uint64_t> loop_ = 0;
+  std::atomic<int> finished_ = 0;  // blocks of the current loop done
   std::atomic<bool> stopping_ = false;
   std::exception_ptr error_;
   CancelCheck check_;

@@ -88,6 +88,25 @@ class VertexField {
     return first + local;
   }
 
+  // The index of a brick (given by its coordinates, as brick_of's), creating
+  // it if needed. The recent bricks, one per residue of the coordinates
+  // modulo 4, answer most calls without a map lookup.
+  std::uint32_t index_of(const IVec<D>& brick) {
+    std::size_t residue = 0;
+    for (int a = 0; a < D; ++a) residue = residue * 4 + static_cast<std::size_t>(brick[a] & 3);
+    Recent& recent = recent_[residue];
+    if (recent.brick == brick) return recent.index;
+    auto [index, inserted] = brick_of_.try_emplace(Grid<D>::key(brick));
+    if (inserted) {
+      *index = static_cast<std::uint32_t>(brick_origin_.size());
+      brick_origin_.push_back(brick * kBrickSide);
+    }
+    recent = {brick, *index};
+    return *index;
+  }
+  // The coordinates of brick `index`.
+  IVec<D> brick(std::uint32_t index) const { return brick_of(brick_origin_[index]); }
+
   // Bricks in use, numbered in creation order, [0, bricks()).
   std::size_t bricks() const { return brick_origin_.size(); }
   // Slots in use: every vertex of every brick, [0, slots()).
@@ -113,22 +132,6 @@ class VertexField {
     IVec<D> brick = IVec<D>::Constant(std::numeric_limits<std::int64_t>::min());  // no brick's coordinates
     std::uint32_t index = 0;
   };
-
-  // The index of a brick, creating it if needed. The recent bricks, one per
-  // residue of the coordinates modulo 4, answer most calls without a map lookup.
-  std::uint32_t index_of(const IVec<D>& brick) {
-    std::size_t residue = 0;
-    for (int a = 0; a < D; ++a) residue = residue * 4 + static_cast<std::size_t>(brick[a] & 3);
-    Recent& recent = recent_[residue];
-    if (recent.brick == brick) return recent.index;
-    auto [index, inserted] = brick_of_.try_emplace(Grid<D>::key(brick));
-    if (inserted) {
-      *index = static_cast<std::uint32_t>(brick_origin_.size());
-      brick_origin_.push_back(brick * kBrickSide);
-    }
-    recent = {brick, *index};
-    return *index;
-  }
 
   FlatHashMap<std::uint32_t> brick_of_;
   std::vector<IVec<D>> brick_origin_;  // lowest vertex of each brick
