@@ -1,7 +1,8 @@
 #pragma once
 // Update_Function's first pass: which vertices the walk reads. The walk around
-// a point in cell I covers the vertices [I - 1, I + 2]^D but the box's 2^D
-// corners (see core/resampler.hpp); they are marked as bits of their bricks.
+// a point in cell I covers the vertices [I - 1, I + 2]^D but those on the
+// box's corners and edges (see core/resampler.hpp); they are marked as bits of
+// their bricks.
 //
 // The points are split in contiguous blocks marked in parallel, each block
 // creating its bricks in a field of its own; the blocks' fields are then
