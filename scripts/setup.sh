@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages amls needs (only the missing ones), then
-# configures and builds it in ./build (Release). Sourced by run.sh and test.sh;
+# configures and builds it in ./build (Release). Run by run.sh and test.sh;
 # extra arguments are passed to cmake's configure step.
 set -euo pipefail
 
@@ -14,20 +14,7 @@ packages=(
   xvfb xauth xdotool
 )
 
-missing=()
-for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-
-if ((${#missing[@]})); then
-  echo "amls setup: installing ${missing[*]}" >&2
-  sudo_cmd=()
-  if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
-  "${sudo_cmd[@]}" apt-get update -q
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+"$repo_root/scripts/install_packages.sh" "${packages[@]}"
 
 cmake -S "$repo_root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
 cmake --build "$build_dir" --parallel "$(nproc)"

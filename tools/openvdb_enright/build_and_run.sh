@@ -17,23 +17,7 @@ root="$(cd "$here/../.." && pwd)"
 build_dir="${BUILD_DIR:-$root/build-openvdb}"
 cxx="${CXX:-g++}"
 
-missing=()
-for pkg in libopenvdb-dev libtbb-dev libboost-dev; do
-  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$pkg")
-  fi
-done
-if ((${#missing[@]})); then
-  echo "installing ${missing[*]} with apt-get" >&2
-  sudo_cmd=()
-  if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
-  # The package lists may be absent on a fresh machine; update once if the
-  # install cannot find the packages.
-  if ! "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"; then
-    "${sudo_cmd[@]}" apt-get update
-    "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
-  fi
-fi
+"$root/scripts/install_packages.sh" libopenvdb-dev libtbb-dev libboost-dev
 
 mkdir -p "$build_dir"
 exe="$build_dir/enright_openvdb"
