@@ -81,7 +81,9 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   const double box_side = h * static_cast<double>(VertexField<D>::kBrickSide);
   const double cube_reach = surface.radius() + 0.5 * h * std::sqrt(static_cast<double>(D));
   const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
-  brick_points_.assign(static_cast<std::size_t>(pool.threads()), {});
+  // Cleared, not reassigned: the blocks' id lists keep their storage from step to step.
+  brick_points_.resize(static_cast<std::size_t>(pool.threads()));
+  for (std::vector<std::uint32_t>& ids : brick_points_) ids.clear();
   brick_range_.assign(bricks, {});
   pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int block) {
     std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(block)];
