@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/surface_offsets.hpp"
 #include "core/weight.hpp"
 
 namespace amls {
@@ -87,6 +88,12 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   });
   NormalStats stats;
   for (FitStatus s : status) stats.count(s);
+  offsets_.clear();
+  if constexpr (D == 3) {
+    if (parameters_.bias_correction)
+      offsets_ = surface_offsets<D>(points_.positions, pseudo_normals_, index_,
+                                    {radius_, parameters_.min_weight, filter}, pool);
+  }
   ready_ = true;
   return stats;
 }
@@ -111,12 +118,14 @@ Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
     }
   });
   const bool filter = parameters_.orientation_filter;
+  const bool corrected = !offsets_.empty();
   GradientFit<D> fit;
   index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
     const Vec<D> d = q - x;
-    const double w = weight_of_squared_ratio(d.squaredNorm() * inverse_r2);
+    const double dd = d.squaredNorm();
+    const double w = weight_of_squared_ratio(dd * inverse_r2);
     if (w <= 0.0 || (filter && pseudo_normals_[id].dot(reference) <= 0.0)) return;
-    fit.add(d, pseudo_normals_[id], w);
+    fit.add(d, dd, pseudo_normals_[id], w, corrected ? offsets_[id] : 0.0);
   });
   return fit.solve(parameters_.min_weight);
 }
@@ -132,8 +141,10 @@ template <int D>
 void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
                             Neighbourhood<D>& out) const {
   // Sized for every candidate, then cut to those kept: no capacity checks in the loop.
+  const bool corrected = !offsets_.empty();
   out.positions.resize(ids.size());
   out.normals.resize(ids.size());
+  out.offsets.resize(corrected ? ids.size() : 0);
   const double r2 = radius * radius;
   std::size_t kept = 0;
   for (const std::uint32_t id : ids) {
@@ -141,10 +152,12 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
     if ((q - x).squaredNorm() > r2) continue;
     out.positions[kept] = q;
     out.normals[kept] = pseudo_normals_[id];
+    if (corrected) out.offsets[kept] = offsets_[id];
     ++kept;
   }
   out.positions.resize(kept);
   out.normals.resize(kept);
+  out.offsets.resize(corrected ? kept : 0);
   Vec<D> mean = Vec<D>::Zero();
   for (const Vec<D>& n : out.normals) mean += n;
   const double threshold = std::sqrt(0.5) * mean.norm();  // cos 45 degrees, times |mean|
@@ -173,12 +186,20 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
   const double inverse_r2 = 1.0 / r2;
   GradientFit<D> fit;
   // Branch-free: a neighbour beyond Delta or filtered out adds with weight 0.
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec<D> d = neighbourhood.positions[k] - y;
-    const double dd = d.squaredNorm();
-    const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
-    fit.add(d, dd, neighbourhood.normals[k], agrees ? weight_of_squared_ratio(dd * inverse_r2) : 0.0);
-  }
+  auto add_all = [&](auto&& add) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec<D> d = neighbourhood.positions[k] - y;
+      const double dd = d.squaredNorm();
+      const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
+      add(k, d, dd, agrees ? weight_of_squared_ratio(dd * inverse_r2) : 0.0);
+    }
+  };
+  if (neighbourhood.offsets.empty())
+    add_all([&](std::size_t k, const Vec<D>& d, double dd, double w) { fit.add(d, dd, neighbourhood.normals[k], w); });
+  else
+    add_all([&](std::size_t k, const Vec<D>& d, double dd, double w) {
+      fit.add(d, dd, neighbourhood.normals[k], w, neighbourhood.offsets[k]);
+    });
   return fit.solve(parameters_.min_weight);
 }
 
@@ -186,12 +207,22 @@ template <int D>
 void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
                                    const std::array<Vec<D>, kCubeCorners>& corners,
                                    std::array<Evaluation<D>, kCubeCorners>& out) const {
-  constexpr int V = kCubeCorners;
   if (parameters_.orientation_filter && !neighbourhood.consistent) {
     // Each corner has its own orientation reference: one at a time.
-    for (int v = 0; v < V; ++v) out[v] = evaluate_in(neighbourhood, corners[v]);
-    return;
+    for (int v = 0; v < kCubeCorners; ++v) out[v] = evaluate_in(neighbourhood, corners[v]);
+  } else if (neighbourhood.offsets.empty()) {
+    evaluate_cube_with<false>(neighbourhood, corners, out);
+  } else {
+    evaluate_cube_with<true>(neighbourhood, corners, out);
   }
+}
+
+template <int D>
+template <bool kCorrected>
+void AmlsSurface<D>::evaluate_cube_with(const Neighbourhood<D>& neighbourhood,
+                                        const std::array<Vec<D>, kCubeCorners>& corners,
+                                        std::array<Evaluation<D>, kCubeCorners>& out) const {
+  constexpr int V = kCubeCorners;
   // Structure of arrays over the corners, so that each line below is one
   // vector operation across them. Coordinates are taken from the cube's
   // centre c, with q = p - c for a neighbour p and y the corner: then
@@ -208,7 +239,7 @@ void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
       y[a][v] = corners[v][a] - centre[a];
       yy[v] += y[a][v] * y[a][v];
     }
-  double sum_w[V] = {}, sum_qn[V] = {}, sum_dd[V] = {}, sum_q[D][V] = {}, sum_n[D][V] = {};
+  double sum_w[V] = {}, sum_qn[V] = {}, sum_dd[V] = {}, sum_offset[V] = {}, sum_q[D][V] = {}, sum_n[D][V] = {};
   const double inverse_r2 = 1.0 / (radius_ * radius_);
   const std::size_t n = neighbourhood.positions.size();
   for (std::size_t k = 0; k < n; ++k) {
@@ -226,6 +257,8 @@ void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
       sum_dd[v] += w[v] * dd[v];
       sum_qn[v] += w[v] * qn;
     }
+    if constexpr (kCorrected)
+      for (int v = 0; v < V; ++v) sum_offset[v] += w[v] * neighbourhood.offsets[k];
     for (int a = 0; a < D; ++a)
       for (int v = 0; v < V; ++v) {
         sum_q[a][v] += w[v] * q[a];
@@ -240,7 +273,7 @@ void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
       sn[a] = sum_n[a][v];
       sum_dn -= y[a][v] * sn[a];
     }
-    out[v] = GradientFit<D>(sum_w[v], sum_d, sn, sum_dn, sum_dd[v]).solve(parameters_.min_weight);
+    out[v] = GradientFit<D>(sum_w[v], sum_d, sn, sum_dn, sum_dd[v], sum_offset[v]).solve(parameters_.min_weight);
   }
 }
 

@@ -33,6 +33,11 @@ struct AmlsParameters {
   // normals within Delta all agree (curvature radius above Delta / sqrt(2)) it
   // changes nothing.
   bool orientation_filter = true;
+  // 3D only: F is corrected by the points' smoothed, limited offsets from the
+  // surface, which removes the sphere fit's outward bias on sheets and tubes
+  // (core/surface_offsets.hpp). Without it the 128^3 Enright test gains 7.6 %
+  // of its volume, with it 3.7 %. Ignored in 2D, which has no such bias.
+  bool bias_correction = true;
 };
 
 // Positions and pseudo-normals of the points near a region, copied side by side
@@ -41,6 +46,8 @@ template <int D>
 struct Neighbourhood {
   std::vector<Vec<D>> positions;
   std::vector<Vec<D>> normals;
+  // The points' offsets (AmlsParameters::bias_correction); empty: no correction.
+  std::vector<double> offsets;
   // Every pair of normals agrees (all lie within 45 degrees of their mean), so
   // the orientation filter would keep every point and can be skipped.
   bool consistent = false;
@@ -87,6 +94,8 @@ class AmlsSurface {
   // to agree with the normal it carries; where the fit fails, the carried normal.
   NormalStats update_normals(ThreadPool& pool);
   const std::vector<Vec<D>>& pseudo_normals() const { return pseudo_normals_; }
+  // The bias correction's offset of every point, empty when it is off.
+  const std::vector<double>& offsets() const { return offsets_; }
 
   // F(x) and the fit's gradient, over all points within Delta of x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
@@ -114,6 +123,9 @@ class AmlsSurface {
 
  private:
   void require_ready() const;
+  template <bool kCorrected>
+  void evaluate_cube_with(const Neighbourhood<D>& neighbourhood, const std::array<Vec<D>, kCubeCorners>& corners,
+                          std::array<Evaluation<D>, kCubeCorners>& out) const;
 
   Grid<D> grid_;
   AmlsParameters parameters_;
@@ -121,6 +133,7 @@ class AmlsSurface {
   PointSet<D> points_;
   PointIndex<D> index_;
   std::vector<Vec<D>> pseudo_normals_;
+  std::vector<double> offsets_;
   bool hashed_ = false;
   bool ready_ = false;
 };

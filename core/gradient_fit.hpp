@@ -11,6 +11,8 @@
 //   c = -(b.<d> + a <|d|^2>).
 // F(x) = f(0) = c, and the fitted sphere's gradient at x is b. (See
 // tests/test_gradient_fit.cpp for the check that finite-K solves converge to this.)
+// With the bias correction (core/surface_offsets.hpp), the neighbours' offsets
+// o_i are averaged with the same weights and F(x) = c - <o>.
 #include <cmath>
 
 #include "core/vec.hpp"
@@ -30,8 +32,9 @@ class GradientFit {
  public:
   GradientFit() = default;
   // A fit from sums a caller accumulated itself (see add() for their meaning).
-  GradientFit(double sum_w, const Vec<D>& sum_d, const Vec<D>& sum_n, double sum_dn, double sum_dd)
-      : sum_w_(sum_w), sum_d_(sum_d), sum_n_(sum_n), sum_dn_(sum_dn), sum_dd_(sum_dd) {}
+  GradientFit(double sum_w, const Vec<D>& sum_d, const Vec<D>& sum_n, double sum_dn, double sum_dd,
+              double sum_offset = 0.0)
+      : sum_w_(sum_w), sum_d_(sum_d), sum_n_(sum_n), sum_dn_(sum_dn), sum_dd_(sum_dd), sum_offset_(sum_offset) {}
 
   // d: neighbour position minus x; normal: its pseudo-normal; w: its weight
   // (zero adds nothing, so callers can stay free of branches).
@@ -43,6 +46,11 @@ class GradientFit {
     sum_n_ += w * normal;
     sum_dn_ += w * d.dot(normal);
     sum_dd_ += w * squared_norm;
+  }
+  // The same with the neighbour's offset (the bias correction).
+  void add(const Vec<D>& d, double squared_norm, const Vec<D>& normal, double w, double offset) {
+    add(d, squared_norm, normal, w);
+    sum_offset_ += w * offset;
   }
 
   double total_weight() const { return sum_w_; }
@@ -61,7 +69,7 @@ class GradientFit {
     const double a = 0.5 * (sum_dn_ * inverse_w - mean_d.dot(mean_n)) / variance;
     e.gradient = mean_n - 2.0 * a * mean_d;
     e.mean_normal = mean_n;
-    e.value = -(e.gradient.dot(mean_d) + a * mean_dd);
+    e.value = -(e.gradient.dot(mean_d) + a * mean_dd) - sum_offset_ * inverse_w;
     e.defined = std::isfinite(e.value) && e.gradient.allFinite();
     return e;
   }
@@ -72,6 +80,7 @@ class GradientFit {
   Vec<D> sum_n_ = Vec<D>::Zero();
   double sum_dn_ = 0.0;
   double sum_dd_ = 0.0;
+  double sum_offset_ = 0.0;
 };
 
 }  // namespace amls
