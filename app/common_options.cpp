@@ -33,6 +33,10 @@ void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config) {
   cmd.add_option("--min-weight", config.min_weight, "F is undefined where the neighbours' weights sum to less than this")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd.add_option("--bias-correction", config.bias_correction,
+                 "3D: correct F by the points' smoothed, limited offsets from it, removing the sphere fit's outward "
+                 "bias on thin sheets and tubes (no effect in 2D or with raytrace)")
+      ->capture_default_str();
   cmd.add_option("--dt", config.dt, "time between resamplings")->check(CLI::PositiveNumber)->capture_default_str();
   cmd.add_option("--substeps", config.substeps, "RK4 steps per dt")->check(CLI::PositiveNumber)->capture_default_str();
   cmd.add_option("--ray-samples", config.ray.samples_per_cell,

@@ -20,6 +20,8 @@ nlohmann::json to_json(const FlowTestReport& r) {
                          {"cluster_threshold", r.config.ray.cluster_threshold}};
   j["radius_factor"] = r.config.radius_factor;
   j["min_weight"] = r.config.min_weight;
+  // In effect: 3D, grid resampler (see AmlsParameters::bias_correction).
+  j["bias_correction"] = r.config.bias_correction && r.dimension == 3 && r.config.variant != FlowVariant::raytrace;
   j["dt"] = r.config.dt;
   j["substeps"] = r.config.substeps;
   j["steps"] = r.steps;

@@ -116,7 +116,10 @@ FlowTestRun<D> run_flow_test(const char* test, const FlowTestConfig& config, std
   report.dimension = D;
   report.config = config;
   const Grid<D> grid = Grid<D>::unit(config.grid);
-  const AmlsParameters parameters{config.radius_factor, config.min_weight};
+  AmlsParameters parameters;
+  parameters.radius_factor = config.radius_factor;
+  parameters.min_weight = config.min_weight;
+  parameters.bias_correction = config.bias_correction;
   if (config.variant == FlowVariant::raytrace) {
     RayTracingSurface<D> loop(grid, parameters, config.ray, config.threads);
     loop.set_points(sample(0.5 * grid.spacing()));

@@ -31,6 +31,7 @@ struct FlowTestConfig {
   RaySettings ray;  // for FlowVariant::raytrace
   double radius_factor = 3.0;
   double min_weight = AmlsParameters{}.min_weight;
+  bool bias_correction = AmlsParameters{}.bias_correction;  // 3D only; the ray-tracing baseline never has it
   double dt = 0.01;
   int substeps = 1;
   int threads = 1;

@@ -24,10 +24,21 @@ PhaseTimes RayPhaseTimings::phases() const {
           {"normals", normals}};
 }
 
+namespace {
+
+// The baseline is the paper's plain AMLS surface: its fits see no offsets, and
+// amls_surface() must measure that same surface.
+AmlsParameters without_bias_correction(AmlsParameters parameters) {
+  parameters.bias_correction = false;
+  return parameters;
+}
+
+}  // namespace
+
 template <int D>
 RayTracingSurface<D>::RayTracingSurface(const Grid<D>& grid, const AmlsParameters& parameters,
                                         const RaySettings& settings, int threads)
-    : definition_(grid, parameters), resampler_(settings), pool_(threads) {}
+    : definition_(grid, without_bias_correction(parameters)), resampler_(settings), pool_(threads) {}
 
 template <int D>
 void RayTracingSurface<D>::set_points(PointSet<D> points) {

@@ -18,6 +18,23 @@ AmlsSurface<D> ready_surface(PointSet<D> points, const Grid<D>& grid, ThreadPool
   return surface;
 }
 
+// Points about `spacing` apart on the cylinder of `radius` around the z axis
+// through `center`, from z = center.z - half_length to + half_length, with
+// outward normals.
+inline PointSet<3> sample_cylinder(const Vec<3>& center, double radius, double half_length, double spacing) {
+  PointSet<3> out;
+  const int around = static_cast<int>(std::round(2.0 * std::numbers::pi * radius / spacing));
+  const int along = static_cast<int>(std::round(half_length / spacing));
+  for (int k = -along; k <= along; ++k)
+    for (int j = 0; j < around; ++j) {
+      // Rings alternately turned by half a step, as a surface's samples would be.
+      const double angle = 2.0 * std::numbers::pi * (j + 0.5 * (k & 1)) / around;
+      const Vec<3> normal(std::cos(angle), std::sin(angle), 0.0);
+      out.add(center + radius * normal + Vec<3>(0.0, 0.0, k * spacing), normal);
+    }
+  return out;
+}
+
 // The distance from each point to its nearest other point.
 template <int D>
 std::vector<double> nearest_neighbour_distances(const std::vector<Vec<D>>& p) {
