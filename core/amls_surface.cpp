@@ -58,7 +58,11 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   std::vector<FitStatus> status(n);
   const double inverse_radius = 1.0 / radius_;
   const bool filter = parameters_.orientation_filter;
-  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+  // The bias correction reads every point's neighbours within Delta again:
+  // listed here, where they are found anyway.
+  const bool list_neighbours = D == 3 && parameters_.bias_correction;
+  if (list_neighbours) neighbours_.reset(n, pool.threads());
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
     // Points are in cell order, so consecutive points share their candidate
     // neighbours: every point of the 3^D cells around their cell.
     std::vector<std::uint32_t> candidates;
@@ -76,12 +80,16 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
       }
       const Vec<D>& own = points_.normals[i];
       PrattFit<D> fit;
+      std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.begin_point(i, block) : nullptr;
       for (const std::uint32_t id : candidates) {
         const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
         const double s2 = u.squaredNorm();
-        if (s2 > 1.0 || (filter && points_.normals[id].dot(own) <= 0.0)) continue;
+        if (s2 > 1.0) continue;
+        if (listed) listed->push_back(id);
+        if (filter && points_.normals[id].dot(own) <= 0.0) continue;
         fit.add(u, weight_of_squared_ratio(s2));
       }
+      if (listed) neighbours_.end_point(i, block);
       pseudo_normals_[i] = points_.normals[i];
       status[i] = fit.solve(points_.normals[i], pseudo_normals_[i]);
     }
@@ -90,8 +98,8 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   for (FitStatus s : status) stats.count(s);
   offsets_.clear();
   if constexpr (D == 3) {
-    if (parameters_.bias_correction)
-      offsets_ = surface_offsets<D>(points_.positions, pseudo_normals_, index_,
+    if (list_neighbours)
+      offsets_ = surface_offsets<D>(points_.positions, pseudo_normals_, neighbours_,
                                     {radius_, parameters_.min_weight, filter}, pool);
   }
   ready_ = true;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/gradient_fit.hpp"
+#include "core/neighbour_lists.hpp"
 #include "core/grid.hpp"
 #include "core/point_index.hpp"
 #include "core/point_set.hpp"
@@ -134,6 +135,7 @@ class AmlsSurface {
   PointIndex<D> index_;
   std::vector<Vec<D>> pseudo_normals_;
   std::vector<double> offsets_;
+  NeighbourLists neighbours_;  // for the bias correction: kept so that steps reuse the storage
   bool hashed_ = false;
   bool ready_ = false;
 };

@@ -31,7 +31,7 @@
 // at the tips where it is needed: +6.7 % instead of +3.6 %.)
 #include <vector>
 
-#include "core/point_index.hpp"
+#include "core/neighbour_lists.hpp"
 #include "core/thread_pool.hpp"
 #include "core/vec.hpp"
 
@@ -43,16 +43,16 @@ struct SurfaceOffsetOptions {
   bool orientation_filter = true;  // neighbours count only if their normal agrees (AmlsParameters)
 };
 
-// The limited offsets o_i of the points `positions` (in the cell order of
-// `index`, ids equal to positions) with pseudo-normals `normals`. The same for
-// any thread count.
+// The limited offsets o_i of the points `positions` with pseudo-normals
+// `normals`; `neighbours` holds, for each point, every point within Delta of
+// it (itself included) in a fixed order. The same for any thread count.
 template <int D>
 std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
-                                    const PointIndex<D>& index, const SurfaceOffsetOptions& options,
+                                    const NeighbourLists& neighbours, const SurfaceOffsetOptions& options,
                                     ThreadPool& pool);
 
 extern template std::vector<double> surface_offsets<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,
-                                                       const PointIndex<3>&, const SurfaceOffsetOptions&,
+                                                       const NeighbourLists&, const SurfaceOffsetOptions&,
                                                        ThreadPool&);
 
 }  // namespace amls
