@@ -35,25 +35,8 @@ class PointIndex {
   // in a fixed order (by cell, then by position in the index).
   template <typename Fn>
   void for_each_in_cells(const IVec<D>& lo, const IVec<D>& hi, Fn&& fn) const {
-    auto visit = [&](const Run& run) {
+    for_each_run_in_cells(lo, hi, [&](const Run& run) {
       for (std::uint32_t k = run.begin; k < run.end; ++k) fn(ids_[k], positions_[k]);
-    };
-    if (dense_.empty()) {
-      for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
-        if (const Run* run = runs_.find(Grid<D>::key(c))) visit(*run);
-      });
-      return;
-    }
-    // Cells outside the table's box hold no points: clip the query to it, then
-    // walk it a row (along axis 0) at a time, in for_each_index_in_box's order.
-    const IVec<D> from = lo.cwiseMax(dense_lo_);
-    const IVec<D> to = hi.cwiseMin(dense_hi_);
-    if (to[0] < from[0]) return;  // (for_each_index_in_box checks the other axes)
-    IVec<D> row_end = to;
-    row_end[0] = from[0];
-    for_each_index_in_box<D>(from, row_end, [&](const IVec<D>& row) {
-      const Run* run = &dense_[dense_slot(row)];
-      for (std::int64_t x = from[0]; x <= to[0]; ++x, ++run) visit(*run);
     });
   }
 
@@ -83,11 +66,22 @@ class PointIndex {
   void gather(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const {
     if (!cells_) return;
     const double r2 = radius * radius;
-    for_each_in_cells(cells_->cell_of(lo - Vec<D>::Constant(radius)), cells_->cell_of(hi + Vec<D>::Constant(radius)),
-                      [&](std::uint32_t id, const Vec<D>& q) {
-                        const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
-                        if (outside.squaredNorm() <= r2) out.push_back(id);
-                      });
+    std::size_t kept = out.size();
+    for_each_run_in_cells(cells_->cell_of(lo - Vec<D>::Constant(radius)),
+                          cells_->cell_of(hi + Vec<D>::Constant(radius)), [&](const Run& run) {
+                            // Room for the whole run, every id written and only those
+                            // within reach kept: no branch on the distance, which is hard
+                            // to predict.
+                            out.resize(kept + (run.end - run.begin));
+                            std::uint32_t* ids = out.data();
+                            for (std::uint32_t k = run.begin; k < run.end; ++k) {
+                              const Vec<D>& q = positions_[k];
+                              const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
+                              ids[kept] = ids_[k];
+                              kept += outside.squaredNorm() <= r2 ? 1 : 0;
+                            }
+                          });
+    out.resize(kept);
   }
 
  // Whether the cell table is the dense array (else the hash map); see below.
@@ -96,7 +90,7 @@ class PointIndex {
  private:
   // The dense table is used when its box has at most this many cells per
   // point plus kDenseMinCells: it then costs little more memory than the map.
-  static constexpr double kDenseCellsPerPoint = 8.0;
+  static constexpr double kDenseCellsPerPoint = 32.0;
   static constexpr double kDenseMinCells = 4096.0;
 
   struct Run {
@@ -105,6 +99,29 @@ class PointIndex {
   };
 
   void fill_cell_table();
+
+  // Calls fn(run) for every non-empty cell in [lo, hi], in for_each_index_in_box's order.
+  template <typename Fn>
+  void for_each_run_in_cells(const IVec<D>& lo, const IVec<D>& hi, Fn&& fn) const {
+    if (dense_.empty()) {
+      for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
+        if (const Run* run = runs_.find(Grid<D>::key(c))) fn(*run);
+      });
+      return;
+    }
+    // Cells outside the table's box hold no points: clip the query to it, then
+    // walk it a row (along axis 0) at a time, in for_each_index_in_box's order.
+    const IVec<D> from = lo.cwiseMax(dense_lo_);
+    const IVec<D> to = hi.cwiseMin(dense_hi_);
+    if (to[0] < from[0]) return;  // (for_each_index_in_box checks the other axes)
+    IVec<D> row_end = to;
+    row_end[0] = from[0];
+    for_each_index_in_box<D>(from, row_end, [&](const IVec<D>& row) {
+      const Run* run = &dense_[dense_slot(row)];
+      for (std::int64_t x = from[0]; x <= to[0]; ++x, ++run)
+        if (run->begin != run->end) fn(*run);
+    });
+  }
 
   // The slot of cell c in dense_, which is row-major over [dense_lo_, dense_hi_].
   std::size_t dense_slot(const IVec<D>& c) const {
