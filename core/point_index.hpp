@@ -84,12 +84,13 @@ class PointIndex {
     out.resize(kept);
   }
 
- // Whether the cell table is the dense array (else the hash map); see below.
+  // Whether the cell table is the dense array (else the hash map); see below.
   bool uses_dense_table() const { return !dense_.empty(); }
 
  private:
   // The dense table is used when its box has at most this many cells per
-  // point plus kDenseMinCells: it then costs little more memory than the map.
+  // point plus kDenseMinCells: at 8 bytes a cell, its memory and the cost of
+  // refilling it at every build stay small next to the points' own.
   static constexpr double kDenseCellsPerPoint = 32.0;
   static constexpr double kDenseMinCells = 4096.0;
 
