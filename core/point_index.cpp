@@ -82,17 +82,36 @@ void PointIndex<D>::build(const std::vector<Vec<D>>& positions, const Vec<D>& or
 
   positions_.resize(keyed_.size());
   ids_.resize(keyed_.size());
-  runs_.clear();
-  Run* run = nullptr;
+  cell_runs_.clear();
   for (std::size_t k = 0; k < keyed_.size(); ++k) {
     ids_[k] = keyed_[k].second;
     positions_[k] = positions[keyed_[k].second];
     // A code names one cell: a run starts where the code changes.
-    if (k == 0 || keyed_[k].first != keyed_[k - 1].first) {
-      run = runs_.try_emplace(Grid<D>::key(cells.cell_of(positions_[k]))).first;
-      run->begin = static_cast<std::uint32_t>(k);
-    }
-    run->end = static_cast<std::uint32_t>(k + 1);
+    if (k == 0 || keyed_[k].first != keyed_[k - 1].first)
+      cell_runs_.push_back({cells.cell_of(positions_[k]), Run{static_cast<std::uint32_t>(k), 0}});
+    cell_runs_.back().second.end = static_cast<std::uint32_t>(k + 1);
+  }
+  fill_cell_table();
+}
+
+template <int D>
+void PointIndex<D>::fill_cell_table() {
+  runs_.clear();
+  dense_.clear();
+  if (cell_runs_.empty()) return;
+  dense_lo_ = dense_hi_ = cell_runs_.front().first;
+  for (const auto& [cell, run] : cell_runs_) {
+    dense_lo_ = dense_lo_.cwiseMin(cell);
+    dense_hi_ = dense_hi_.cwiseMax(cell);
+  }
+  // In floating point: the box of far-flung points can overflow any integer.
+  double box_cells = 1.0;
+  for (int a = 0; a < D; ++a) box_cells *= static_cast<double>(dense_hi_[a] - dense_lo_[a] + 1);
+  if (box_cells <= kDenseCellsPerPoint * static_cast<double>(positions_.size()) + kDenseMinCells) {
+    dense_.assign(static_cast<std::size_t>(box_cells), Run{});
+    for (const auto& [cell, run] : cell_runs_) dense_[dense_slot(cell)] = run;
+  } else {
+    for (const auto& [cell, run] : cell_runs_) *runs_.try_emplace(Grid<D>::key(cell)).first = run;
   }
 }
 

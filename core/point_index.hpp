@@ -1,8 +1,8 @@
 #pragma once
 // Neighbour queries over a point set (paper, section 3.1, Hash()). Points are
-// bucketed by cell in one sorted array (no linked lists); a sparse map takes a
-// cell to its run of points. Cells are as wide as the largest query radius, so
-// a query inspects at most 3^D cells whatever the grid spacing.
+// bucketed by cell in one sorted array (no linked lists); a table takes a cell
+// to its run of points. Cells are as wide as the largest query radius, so a
+// query inspects at most 3^D cells whatever the grid spacing.
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -35,10 +35,8 @@ class PointIndex {
   // in a fixed order (by cell, then by position in the index).
   template <typename Fn>
   void for_each_in_cells(const IVec<D>& lo, const IVec<D>& hi, Fn&& fn) const {
-    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
-      if (const Run* run = runs_.find(Grid<D>::key(c))) {
-        for (std::uint32_t k = run->begin; k < run->end; ++k) fn(ids_[k], positions_[k]);
-      }
+    for_each_run_in_cells(lo, hi, [&](const Run& run) {
+      for (std::uint32_t k = run.begin; k < run.end; ++k) fn(ids_[k], positions_[k]);
     });
   }
 
@@ -68,23 +66,86 @@ class PointIndex {
   void gather(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const {
     if (!cells_) return;
     const double r2 = radius * radius;
-    for_each_in_cells(cells_->cell_of(lo - Vec<D>::Constant(radius)), cells_->cell_of(hi + Vec<D>::Constant(radius)),
-                      [&](std::uint32_t id, const Vec<D>& q) {
-                        const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
-                        if (outside.squaredNorm() <= r2) out.push_back(id);
-                      });
+    std::size_t kept = out.size();
+    for_each_run_in_cells(cells_->cell_of(lo - Vec<D>::Constant(radius)),
+                          cells_->cell_of(hi + Vec<D>::Constant(radius)), [&](const Run& run) {
+                            // Room for the whole run, every id written and only those
+                            // within reach kept: no branch on the distance, which is hard
+                            // to predict.
+                            out.resize(kept + (run.end - run.begin));
+                            std::uint32_t* ids = out.data();
+                            for (std::uint32_t k = run.begin; k < run.end; ++k) {
+                              const Vec<D>& q = positions_[k];
+                              const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
+                              ids[kept] = ids_[k];
+                              kept += outside.squaredNorm() <= r2 ? 1 : 0;
+                            }
+                          });
+    out.resize(kept);
   }
 
+  // Whether the cell table is the dense array (else the hash map); see below.
+  bool uses_dense_table() const { return !dense_.empty(); }
+
  private:
+  // The dense table is used when its box has at most this many cells per
+  // point plus kDenseMinCells: at 8 bytes a cell, its memory and the cost of
+  // refilling it at every build stay small next to the points' own.
+  static constexpr double kDenseCellsPerPoint = 32.0;
+  static constexpr double kDenseMinCells = 4096.0;
+
   struct Run {
     std::uint32_t begin = 0;
     std::uint32_t end = 0;
   };
 
+  void fill_cell_table();
+
+  // Calls fn(run) for every non-empty cell in [lo, hi], in for_each_index_in_box's order.
+  template <typename Fn>
+  void for_each_run_in_cells(const IVec<D>& lo, const IVec<D>& hi, Fn&& fn) const {
+    if (dense_.empty()) {
+      for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& c) {
+        if (const Run* run = runs_.find(Grid<D>::key(c))) fn(*run);
+      });
+      return;
+    }
+    // Cells outside the table's box hold no points: clip the query to it, then
+    // walk it a row (along axis 0) at a time, in for_each_index_in_box's order.
+    const IVec<D> from = lo.cwiseMax(dense_lo_);
+    const IVec<D> to = hi.cwiseMin(dense_hi_);
+    if (to[0] < from[0]) return;  // (for_each_index_in_box checks the other axes)
+    IVec<D> row_end = to;
+    row_end[0] = from[0];
+    for_each_index_in_box<D>(from, row_end, [&](const IVec<D>& row) {
+      const Run* run = &dense_[dense_slot(row)];
+      for (std::int64_t x = from[0]; x <= to[0]; ++x, ++run)
+        if (run->begin != run->end) fn(*run);
+    });
+  }
+
+  // The slot of cell c in dense_, which is row-major over [dense_lo_, dense_hi_].
+  std::size_t dense_slot(const IVec<D>& c) const {
+    std::size_t slot = 0;
+    for (int a = D - 1; a >= 0; --a)
+      slot = slot * static_cast<std::size_t>(dense_hi_[a] - dense_lo_[a] + 1) +
+             static_cast<std::size_t>(c[a] - dense_lo_[a]);
+    return slot;
+  }
+
   std::optional<Grid<D>> cells_;
   std::vector<Vec<D>> positions_;  // sorted by cell
   std::vector<std::uint32_t> ids_;  // original index of each sorted position
+  // The cell table. Queries are latency-bound on it, so when the points' box
+  // of cells is small next to their number it is a dense array over that box
+  // (a lookup is one load, and a row of cells is consecutive); otherwise, as
+  // for points spread far apart, it is a sparse hash map. Empty dense_ means
+  // the map is in use.
   FlatHashMap<Run> runs_;
+  std::vector<Run> dense_;
+  IVec<D> dense_lo_ = IVec<D>::Zero(), dense_hi_ = IVec<D>::Zero();
+  // Each run's cell, kept between builds like keyed_.
+  std::vector<std::pair<IVec<D>, Run>> cell_runs_;
   // (Morton code of the cell, id) of every point, and the sort's working
   // space: kept so that rebuilding every step does not allocate.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed_, sort_scratch_;

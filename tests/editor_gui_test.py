@@ -294,7 +294,7 @@ def test_frames_during_heavy_step(binary, folder):
     scene = os.path.join(folder, "sphere.json")
     with open(scene, "w") as f:
         f.write('{"dimension": 3, "name": "sphere", "shape": {"type": "sphere", "radius": 1, "points": 100000},'
-                ' "grid": {"spacing": 0.009}, "stages": [{"handles": [[0, 0, 1]],'
+                ' "grid": {"spacing": 0.007}, "stages": [{"handles": [[0, 0, 1]],'
                 ' "targets": [{"steps": 1, "handles": [[0, 0, 1.1]]}]}]}')
     # A small window: llvmpipe draws the 100 000 splats in software, on the cores the worker uses too.
     editor = Editor(binary, folder, "editor3d", [scene], size="640x480")

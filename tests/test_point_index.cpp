@@ -9,15 +9,26 @@ using namespace amls;
 
 namespace {
 
+// 3000 points in [-0.2, 1.2]^D, then `far` points far outside it (ids from 3000 on).
 template <int D>
-void check_against_brute_force(double cell, double radius, unsigned seed) {
-  std::mt19937 rng(seed);
+std::vector<Vec<D>> random_points(std::mt19937& rng, int far) {
   std::uniform_real_distribution<double> u(-0.2, 1.2);
   std::vector<Vec<D>> pts(3000);
   for (auto& p : pts)
     for (int a = 0; a < D; ++a) p[a] = u(rng);
+  for (int k = 0; k < far; ++k) pts.push_back(Vec<D>::Constant(1e4 * (k + 1)));
+  return pts;
+}
+
+template <int D>
+void check_against_brute_force(double cell, double radius, unsigned seed, int far) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  const std::vector<Vec<D>> pts = random_points<D>(rng, far);
   PointIndex<D> index;
   index.build(pts, Vec<D>::Zero(), cell);
+  // A far point spreads the box of cells too wide for the dense table.
+  REQUIRE(index.uses_dense_table() == (far == 0));
   std::uniform_real_distribution<double> extent(0.0, 0.15);
   for (int q = 0; q < 400; ++q) {
     // Even queries are points, odd ones boxes.
@@ -41,10 +52,48 @@ void check_against_brute_force(double cell, double radius, unsigned seed) {
 }  // namespace
 
 TEST_CASE("neighbour queries around points and boxes find exactly the points a brute-force search finds") {
-  check_against_brute_force<2>(0.05, 0.05, 1);
-  check_against_brute_force<2>(0.05, 0.13, 2);  // radius wider than a cell
-  check_against_brute_force<3>(0.1, 0.1, 3);
-  check_against_brute_force<3>(0.1, 0.04, 4);
+  for (const int far : {0, 1}) {
+    CAPTURE(far);
+    check_against_brute_force<2>(0.05, 0.05, 1, far);
+    check_against_brute_force<2>(0.05, 0.13, 2, far);  // radius wider than a cell
+    check_against_brute_force<3>(0.1, 0.1, 3, far);
+    check_against_brute_force<3>(0.1, 0.04, 4, far);
+  }
+}
+
+template <int D>
+void check_same_order_dense_and_sparse(double cell, unsigned seed) {
+  std::mt19937 rng(seed);
+  const std::vector<Vec<D>> near = random_points<D>(rng, 0);
+  std::vector<Vec<D>> spread = near;
+  spread.push_back(Vec<D>::Constant(1e4));
+  PointIndex<D> dense, sparse;
+  dense.build(near, Vec<D>::Zero(), cell);
+  sparse.build(spread, Vec<D>::Zero(), cell);
+  REQUIRE(dense.uses_dense_table());
+  REQUIRE_FALSE(sparse.uses_dense_table());
+  std::uniform_real_distribution<double> u(-0.5, 1.5);  // some queries reach past the points' box
+  for (int q = 0; q < 200; ++q) {
+    Vec<D> lo;
+    for (int a = 0; a < D; ++a) lo[a] = u(rng);
+    const Vec<D> hi = lo.array() + 0.1;
+    std::vector<std::uint32_t> from_dense, from_sparse;
+    dense.gather(lo, hi, cell, from_dense);
+    sparse.gather(lo, hi, cell, from_sparse);
+    REQUIRE(from_dense == from_sparse);
+    const IVec<D> c = dense.cell_of(lo);
+    std::vector<std::uint32_t> cells_dense, cells_sparse;
+    dense.for_each_in_cells(c.array() - 1, c.array() + 1, [&](std::uint32_t id, const Vec<D>&) { cells_dense.push_back(id); });
+    sparse.for_each_in_cells(c.array() - 1, c.array() + 1, [&](std::uint32_t id, const Vec<D>&) { cells_sparse.push_back(id); });
+    REQUIRE(cells_dense == cells_sparse);
+  }
+}
+
+// Results (sums over neighbours) depend on the visiting order, so the two
+// cell tables must visit the same points in the same order.
+TEST_CASE("the dense and the sparse cell table visit the same points in the same order") {
+  check_same_order_dense_and_sparse<2>(0.05, 5);
+  check_same_order_dense_and_sparse<3>(0.1, 6);
 }
 
 TEST_CASE("the index rejects non-finite points with a message naming the point") {
