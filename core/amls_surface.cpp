@@ -180,16 +180,19 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
   const bool filter = parameters_.orientation_filter && !neighbourhood.consistent;
   // The orientation reference: the pseudo-normal of the point nearest to y.
   // (Recomputing distances in the second pass is cheaper than storing them.)
+  // Tracked by index with selects, not branches: which neighbour is nearer
+  // than the ones before it is unpredictable.
   Vec<D> reference = Vec<D>::Zero();
   if (filter) {
     double nearest = r2;
+    std::size_t nearest_k = n;
     for (std::size_t k = 0; k < n; ++k) {
       const double d2 = (neighbourhood.positions[k] - y).squaredNorm();
-      if (d2 < nearest) {
-        nearest = d2;
-        reference = neighbourhood.normals[k];
-      }
+      const bool nearer = d2 < nearest;
+      nearest = nearer ? d2 : nearest;
+      nearest_k = nearer ? k : nearest_k;
     }
+    if (nearest_k < n) reference = neighbourhood.normals[nearest_k];
   }
   const double inverse_r2 = 1.0 / r2;
   GradientFit<D> fit;
@@ -199,7 +202,7 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
       const Vec<D> d = neighbourhood.positions[k] - y;
       const double dd = d.squaredNorm();
       const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
-      add(k, d, dd, agrees ? weight_of_squared_ratio(dd * inverse_r2) : 0.0);
+      add(k, d, dd, weight_of_squared_ratio(dd * inverse_r2) * static_cast<double>(agrees));
     }
   };
   if (neighbourhood.offsets.empty())
