@@ -148,7 +148,9 @@ void AmlsSurface<D>::gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radiu
 template <int D>
 void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
                             Neighbourhood<D>& out) const {
-  // Sized for every candidate, then cut to those kept: no capacity checks in the loop.
+  // Sized for every candidate, then cut to those kept: no capacity checks in
+  // the loop. Every candidate is written and only those within reach kept: no
+  // branch on the distance, which is hard to predict.
   const bool corrected = !offsets_.empty();
   out.positions.resize(ids.size());
   out.normals.resize(ids.size());
@@ -157,11 +159,10 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
   std::size_t kept = 0;
   for (const std::uint32_t id : ids) {
     const Vec<D>& q = points_.positions[id];
-    if ((q - x).squaredNorm() > r2) continue;
     out.positions[kept] = q;
     out.normals[kept] = pseudo_normals_[id];
     if (corrected) out.offsets[kept] = offsets_[id];
-    ++kept;
+    kept += (q - x).squaredNorm() > r2 ? 0 : 1;
   }
   out.positions.resize(kept);
   out.normals.resize(kept);

@@ -183,8 +183,19 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
   std::vector<std::size_t> evaluations(static_cast<std::size_t>(pool.threads()), 0);
   std::vector<std::size_t> fallbacks(evaluations.size(), 0);
 
+  // Each crossing's root finding reads every point within Delta of its edge,
+  // i.e. within Delta + h/2 of the edge's midpoint. Crossings are listed brick
+  // by brick, and a brick's crossings lie close together, so a selection made
+  // with kReuseMargin to spare serves the following crossings of the brick
+  // whose midpoints are within that margin of its centre. The extra points
+  // are beyond Delta of every y on the edge: evaluate_in() weights them by
+  // exactly 0, so F's bits are those of a selection per crossing (and the
+  // orientation filter keeps the same points: see Neighbourhood::consistent).
+  const double reuse_margin = kReuseMargin * h;
   pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int block) {
     Neighbourhood<D> candidates;
+    std::size_t candidates_brick = std::numeric_limits<std::size_t>::max();
+    Vec<D> candidates_centre = Vec<D>::Zero();
     for (std::size_t c = begin; c < end; ++c) {
       Crossing& x = crossings_[c];
       const Evaluation<D>& f0 = values_[x.from];
@@ -196,10 +207,16 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         direction[x.axis] = h;
         // Every point that can reach the edge, taken once for all iterations
         // from the points gathered for the edge's brick.
-        const BrickPoints& range = brick_range_[x.from / VertexField<D>::kBrickVolume];
-        const std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(range.block)];
-        surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), start + 0.5 * direction,
-                       surface.radius() + 0.5 * h, candidates);
+        const std::size_t brick = x.from / VertexField<D>::kBrickVolume;
+        const Vec<D> midpoint = start + 0.5 * direction;
+        if (brick != candidates_brick || (midpoint - candidates_centre).squaredNorm() > reuse_margin * reuse_margin) {
+          const BrickPoints& range = brick_range_[brick];
+          const std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(range.block)];
+          surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), midpoint,
+                         surface.radius() + 0.5 * h + reuse_margin, candidates);
+          candidates_brick = brick;
+          candidates_centre = midpoint;
+        }
         root = locate_segment_root<D>([&](const Vec<D>& y) { return surface.evaluate_in(candidates, y); }, start,
                                       direction, f0, f1, x.axis);
         evaluations[static_cast<std::size_t>(block)] += static_cast<std::size_t>(root.evaluations);

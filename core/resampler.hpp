@@ -86,6 +86,11 @@ class Resampler {
     Vec<D> normal = Vec<D>::Zero();
   };
 
+  // How far, in h, a crossing's edge midpoint may lie from the centre of the
+  // neighbourhood selected for an earlier crossing and still reuse it (see
+  // locate_crossings()): more reuse, but more zero-weight points per evaluation.
+  static constexpr double kReuseMargin = 2.0;
+
   void list_crossings(ThreadPool& pool);
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 

@@ -80,3 +80,34 @@ TEST_CASE("F at a cube's corners in one pass equals F corner by corner, with and
   const auto thin = ready_surface(std::move(strip), Grid<2>::unit(128), pool);
   CHECK_FALSE(check_cube_matches_single_evaluations<2>(thin, Vec<2>(0.5, 0.505)));
 }
+
+TEST_CASE("F from a neighbourhood selected with room to spare has the bits of F from one selected within Delta") {
+  // The resampler's root finding reuses one selection for nearby edges
+  // (Resampler::kReuseMargin): the extra points must weigh exactly 0 and must
+  // not change which points the orientation filter keeps.
+  ThreadPool pool(1);
+  const Grid<2> grid = Grid<2>::unit(128);
+  const double h = grid.spacing();
+  // A circle of diameter about 4 Delta: the wide selection holds the far
+  // side, whose normals oppose the near side's, so only it needs the filter.
+  const Vec<2> c(0.5, 0.5);
+  const auto s = ready_surface(sample_circle(c, 0.05, 60), grid, pool);
+  std::vector<std::uint32_t> ids;
+  s.gather_ids(c, c, 0.2, ids);
+  const Vec<2> centre = c + Vec<2>(0.05, 0.0);
+  Neighbourhood<2> tight, wide;
+  s.select(ids, centre, s.radius() + h, tight);
+  s.select(ids, centre, s.radius() + 11.0 * h, wide);
+  CHECK(tight.consistent);
+  CHECK_FALSE(wide.consistent);
+  REQUIRE(wide.positions.size() > tight.positions.size());
+  for (double t = -1.0; t <= 1.0; t += 0.25) {
+    const Vec<2> y = centre + Vec<2>(0.0, t * h);
+    const Evaluation<2> a = s.evaluate_in(tight, y), b = s.evaluate_in(wide, y);
+    REQUIRE(a.defined);
+    CHECK(b.defined);
+    CHECK(a.value == b.value);
+    CHECK(a.gradient == b.gradient);
+    CHECK(a.mean_normal == b.mean_normal);
+  }
+}
