@@ -80,7 +80,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
       }
       const Vec<D>& own = points_.normals[i];
       PrattFit<D> fit;
-      std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.begin_point(i, block) : nullptr;
+      std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.start(i, block) : nullptr;
       for (const std::uint32_t id : candidates) {
         const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
         const double s2 = u.squaredNorm();
@@ -89,7 +89,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
         if (filter && points_.normals[id].dot(own) <= 0.0) continue;
         fit.add(u, weight_of_squared_ratio(s2));
       }
-      if (listed) neighbours_.end_point(i, block);
+      if (listed) neighbours_.finish(i, block);
       pseudo_normals_[i] = points_.normals[i];
       status[i] = fit.solve(points_.normals[i], pseudo_normals_[i]);
     }

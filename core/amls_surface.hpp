@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/gradient_fit.hpp"
-#include "core/neighbour_lists.hpp"
 #include "core/grid.hpp"
+#include "core/id_lists.hpp"
 #include "core/point_index.hpp"
 #include "core/point_set.hpp"
 #include "core/pratt_fit.hpp"
@@ -135,7 +135,7 @@ class AmlsSurface {
   PointIndex<D> index_;
   std::vector<Vec<D>> pseudo_normals_;
   std::vector<double> offsets_;
-  NeighbourLists neighbours_;  // for the bias correction: kept so that steps reuse the storage
+  IdLists neighbours_;  // every point's neighbours within Delta, for the bias correction
   bool hashed_ = false;
   bool ready_ = false;
 };

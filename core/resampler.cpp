@@ -81,12 +81,8 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   const double box_side = h * static_cast<double>(VertexField<D>::kBrickSide);
   const double cube_reach = surface.radius() + 0.5 * h * std::sqrt(static_cast<double>(D));
   const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
-  // Cleared, not reassigned: the blocks' id lists keep their storage from step to step.
-  brick_points_.resize(static_cast<std::size_t>(pool.threads()));
-  for (std::vector<std::uint32_t>& ids : brick_points_) ids.clear();
-  brick_range_.assign(bricks, {});
+  brick_points_.reset(bricks, pool.threads());
   pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int block) {
-    std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(block)];
     Neighbourhood<D> neighbourhood;
     std::array<Vec<D>, AmlsSurface<D>::kCubeCorners> corners;
     std::array<Evaluation<D>, AmlsSurface<D>::kCubeCorners> corner_values;
@@ -94,14 +90,11 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
       const Vec<D> box_lo = grid.vertex_position(field_.vertex_of(first));
       const Vec<D> box_hi = box_lo.array() + box_side;
-      BrickPoints& range = brick_range_[b];
-      range.block = block;
-      range.begin = static_cast<std::uint32_t>(ids.size());
-      surface.gather_ids(box_lo, box_hi, surface.radius(), ids);
-      range.end = static_cast<std::uint32_t>(ids.size());
+      surface.gather_ids(box_lo, box_hi, surface.radius(), brick_points_.start(b, block));
+      brick_points_.finish(b, block);
       // Vertices are evaluated by cubes of 2^D, each from the brick's points
       // within reach of that cube, so that few candidates are wasted.
-      const std::span<const std::uint32_t> brick_ids(ids.data() + range.begin, range.end - range.begin);
+      const std::span<const std::uint32_t> brick_ids = brick_points_.of(b);
       const IVec<D> brick_origin = field_.vertex_of(first);
       for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Ones(), [&](const IVec<D>& cube) {
         const IVec<D> lo = 2 * cube;
@@ -210,10 +203,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         const std::size_t brick = x.from / VertexField<D>::kBrickVolume;
         const Vec<D> midpoint = start + 0.5 * direction;
         if (brick != candidates_brick || (midpoint - candidates_centre).squaredNorm() > reuse_margin * reuse_margin) {
-          const BrickPoints& range = brick_range_[brick];
-          const std::vector<std::uint32_t>& ids = brick_points_[static_cast<std::size_t>(range.block)];
-          surface.select(std::span(ids).subspan(range.begin, range.end - range.begin), midpoint,
-                         surface.radius() + 0.5 * h + reuse_margin, candidates);
+          surface.select(brick_points_.of(brick), midpoint, surface.radius() + 0.5 * h + reuse_margin, candidates);
           candidates_brick = brick;
           candidates_centre = midpoint;
         }

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "core/amls_surface.hpp"
+#include "core/id_lists.hpp"
 #include "core/vertex_field.hpp"
 #include "core/walk_marks.hpp"
 
@@ -97,16 +98,8 @@ class Resampler {
   void list_crossings(ThreadPool& pool);
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
-  // The points gathered around one brick: brick_points_[block][begin, end).
-  struct BrickPoints {
-    int block = 0;
-    std::uint32_t begin = 0;
-    std::uint32_t end = 0;
-  };
-
   VertexField<D> field_;                // vertex <-> slot
-  std::vector<std::vector<std::uint32_t>> brick_points_;  // per thread block: point ids
-  std::vector<BrickPoints> brick_range_;                   // per brick
+  IdLists brick_points_;                // per brick: the points within Delta of its box
   std::vector<Evaluation<D>> values_;   // slot -> F (valid where needed)
   WalkMarks<D> walk_;                   // the vertices the walk reads
   std::vector<std::uint8_t> flags_;     // slot -> NEEDED | DEFINED | POSITIVE

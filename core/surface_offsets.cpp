@@ -10,7 +10,7 @@ namespace amls {
 
 template <int D>
 std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
-                                    const NeighbourLists& neighbours, const SurfaceOffsetOptions& options,
+                                    const IdLists& neighbours, const SurfaceOffsetOptions& options,
                                     ThreadPool& pool) {
   const std::size_t n = positions.size();
   const double inverse_r2 = 1.0 / (options.radius * options.radius);
@@ -72,6 +72,6 @@ std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const 
 }
 
 template std::vector<double> surface_offsets<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,
-                                                const NeighbourLists&, const SurfaceOffsetOptions&, ThreadPool&);
+                                                const IdLists&, const SurfaceOffsetOptions&, ThreadPool&);
 
 }  // namespace amls

@@ -36,7 +36,7 @@
 // give 0.017 %.)
 #include <vector>
 
-#include "core/neighbour_lists.hpp"
+#include "core/id_lists.hpp"
 #include "core/thread_pool.hpp"
 #include "core/vec.hpp"
 
@@ -53,11 +53,11 @@ struct SurfaceOffsetOptions {
 // it (itself included) in a fixed order. The same for any thread count.
 template <int D>
 std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
-                                    const NeighbourLists& neighbours, const SurfaceOffsetOptions& options,
+                                    const IdLists& neighbours, const SurfaceOffsetOptions& options,
                                     ThreadPool& pool);
 
 extern template std::vector<double> surface_offsets<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,
-                                                       const NeighbourLists&, const SurfaceOffsetOptions&,
+                                                       const IdLists&, const SurfaceOffsetOptions&,
                                                        ThreadPool&);
 
 }  // namespace amls
