@@ -196,7 +196,8 @@ void RayResampler<D>::trace(const AmlsSurface<D>& definition, const Ray& ray, st
         Vec<D> start = base;
         start[axis] = previous_y;
         const Vec<D> direction = (y - previous_y) * Vec<D>::Unit(axis);
-        const SegmentRoot<D> root = locate_segment_root<D>(evaluate, start, direction, previous, e, axis);
+        const SegmentRoot<D> root = locate_segment_root<D>(evaluate, start, direction, previous, e,
+                                                           estimate_segment_root(previous, e, direction), axis);
         ++stats.crossings;
         stats.root_evaluations += static_cast<std::size_t>(root.evaluations);
         stats.root_fallbacks += root.fallback;

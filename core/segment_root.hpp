@@ -1,7 +1,7 @@
 #pragma once
 // The zero of F on a short segment whose ends have opposite signs, located by
 // a safeguarded secant iteration (core/root_finding.hpp) started from a cubic
-// Hermite guess, to near machine precision, with
+// Hermite guess (estimate_segment_root()), to near machine precision, with
 // the unit normal a new point gets there: the fitted sphere's gradient at the
 // root when the root's own evaluation gave it, else the gradients of the ends
 // interpolated. Where F turns undefined inside the segment, the zero of the
@@ -76,11 +76,24 @@ inline double hermite_root_guess(double v0, double v1, double s0, double s1, dou
   return t;
 }
 
+// Where the zero of F on the segment from f0 to f1 (`step` long) lies, from
+// the ends alone: the zero of the cubic Hermite interpolant of their values
+// and fit gradients, or the linear interpolant's where Newton leaves the
+// segment. The root finder starts there; the resampler also settles
+// HAVECLOSEPOINT on it (core/resampler.hpp).
+template <int D>
+double estimate_segment_root(const Evaluation<D>& f0, const Evaluation<D>& f1, const Vec<D>& step) {
+  const double linear_t = f0.value / (f0.value - f1.value);
+  const double hermite_t = hermite_root_guess(f0.value, f1.value, f0.gradient.dot(step), f1.gradient.dot(step), linear_t);
+  return std::isnan(hermite_t) ? linear_t : hermite_t;
+}
+
 // `evaluate(y)` returns F's Evaluation<D> at y. f0 and f1 are F at `start` and
-// `start + step`, defined and of opposite signs (a zero counts as positive).
+// `start + step`, defined and of opposite signs (a zero counts as positive);
+// `guess` is estimate_segment_root()'s.
 template <int D, typename Evaluate>
 SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, const Vec<D>& step,
-                                   const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
+                                   const Evaluation<D>& f0, const Evaluation<D>& f1, double guess, int fallback_axis) {
   SegmentRoot<D> out;
   const double linear_t = f0.value / (f0.value - f1.value);
   // The evaluation with the smallest |F| so far: the root's, at the end.
@@ -89,7 +102,7 @@ SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, con
   RootOptions options;
   options.tolerance = kSegmentRootTolerance;
   options.value_tolerance = kSegmentRootTolerance * (std::abs(f0.value) + std::abs(f1.value));
-  options.first_guess = hermite_root_guess(f0.value, f1.value, f0.gradient.dot(step), f1.gradient.dot(step), linear_t);
+  options.first_guess = guess;
   const RootResult root = find_root(
       [&](double t) -> std::optional<RootSample> {
         const Evaluation<D> e = evaluate(Vec<D>(start + t * step));
