@@ -4,7 +4,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -16,12 +15,6 @@ namespace amls {
 
 namespace {
 
-// Per-vertex flags. F's definedness and sign sit here too, so that the walk
-// reads one byte per vertex rather than the whole Evaluation.
-constexpr std::uint8_t kNeeded = 1;  // the walk reads this vertex: Update_Function evaluates it
-constexpr std::uint8_t kDefined = 2;
-constexpr std::uint8_t kPositive = 4;  // F >= 0 (a zero counts as positive)
-
 // Corner v of the unit cube: bit a of v is the offset along axis a.
 template <int D>
 IVec<D> corner_offset(int v) {
@@ -30,15 +23,23 @@ IVec<D> corner_offset(int v) {
   return offset;
 }
 
-// kNeededBytes[m]: the flags of 8 consecutive slots, kNeeded where bit i of m
-// is set, as they lie in memory: expands a brick's mask 8 slots at a time.
-constexpr std::array<std::uint64_t, 256> kNeededBytes = [] {
-  static_assert(std::endian::native == std::endian::little);
-  std::array<std::uint64_t, 256> bytes{};
-  for (std::uint64_t m = 0; m < 256; ++m)
-    for (int i = 0; i < 8; ++i) bytes[m] |= ((m >> i) & 1) * std::uint64_t{kNeeded} << (8 * i);
-  return bytes;
-}();
+// Bit masks over a brick's vertices (VertexField::local_index order) for the
+// edges along `axis`: kInner[axis] marks the vertices whose edge ends in the
+// same brick (coordinate < 3 along the axis), kFirstLayer[axis] those with
+// coordinate 0, where the edges from the brick below end.
+template <int D>
+struct BrickEdgeMasks {
+  std::array<std::uint64_t, D> inner{};
+  std::array<std::uint64_t, D> first_layer{};
+  constexpr BrickEdgeMasks() {
+    for (std::uint32_t l = 0; l < VertexField<D>::kBrickVolume; ++l)
+      for (int axis = 0; axis < D; ++axis) {
+        const std::uint32_t coordinate = (l >> (VertexField<D>::kBrickShift * axis)) % VertexField<D>::kBrickSide;
+        if (coordinate + 1 < VertexField<D>::kBrickSide) inner[axis] |= std::uint64_t{1} << l;
+        if (coordinate == 0) first_layer[axis] |= std::uint64_t{1} << l;
+      }
+  }
+};
 
 // A crossing's position along its edge (from f0 to f1, length h, along
 // `axis`) before any further evaluation of F: the linear interpolant's zero,
@@ -48,12 +49,6 @@ template <int D>
 double estimated_crossing(const Evaluation<D>& f0, const Evaluation<D>& f1, int axis, double h, Variant variant) {
   if (variant == Variant::interpolated) return f0.value / (f0.value - f1.value);
   return estimate_segment_root<D>(f0, f1, Vec<D>(h * Vec<D>::Unit(axis)));
-}
-
-template <int D>
-std::uint8_t sign_flags(const Evaluation<D>& e) {
-  if (!e.defined) return 0;
-  return e.value >= 0.0 ? kDefined | kPositive : kDefined;
 }
 
 }  // namespace
@@ -74,14 +69,9 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   field_.clear();
   stats_ = ResampleStats{};
   walk_.mark(grid, surface.points().positions, field_, pool);
-  flags_.resize(field_.slots());
-  for (std::size_t b = 0; b < walk_.needed().size(); ++b) {
-    const typename WalkMarks<D>::Mask needed = walk_.needed()[b];
-    stats_.vertices += static_cast<std::size_t>(std::popcount(needed));
-    std::uint8_t* brick_flags = flags_.data() + b * VertexField<D>::kBrickVolume;
-    for (std::uint32_t l = 0; l < VertexField<D>::kBrickVolume; l += 8)
-      std::memcpy(brick_flags + l, &kNeededBytes[(needed >> l) & 0xff], 8);
-  }
+  const std::vector<Mask>& needed = walk_.needed();
+  for (const Mask m : needed) stats_.vertices += static_cast<std::size_t>(std::popcount(m));
+  signs_.assign(needed.size(), BrickSigns{});
 
   // One gather per brick serves its vertices here and, in locate_crossings(),
   // the root finding on every edge that starts in it: it holds every point
@@ -106,73 +96,92 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
       // within reach of that cube, so that few candidates are wasted.
       const std::span<const std::uint32_t> brick_ids = brick_points_.of(b);
       const IVec<D> brick_origin = field_.vertex_of(first);
+      const std::uint64_t brick_needed = needed[b];
+      BrickSigns& signs = signs_[b];
       for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Ones(), [&](const IVec<D>& cube) {
         const IVec<D> lo = 2 * cube;
-        std::array<std::uint32_t, AmlsSurface<D>::kCubeCorners> slots;
-        int needed = 0;
+        std::array<std::uint32_t, AmlsSurface<D>::kCubeCorners> locals;
+        int cube_needed = 0;
         for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
           const IVec<D> offset = lo + corner_offset<D>(v);
-          slots[v] = VertexField<D>::slot_in_brick(first, offset);
+          locals[v] = VertexField<D>::slot_in_brick(0, offset);
           corners[v] = grid.vertex_position(brick_origin + offset);
-          needed += (flags_[slots[v]] & kNeeded) ? 1 : 0;
+          cube_needed += static_cast<int>((brick_needed >> locals[v]) & 1);
         }
-        if (needed == 0) return;
+        if (cube_needed == 0) return;
         const Vec<D> cube_centre = grid.vertex_position(brick_origin + lo).array() + 0.5 * h;
         surface.select(brick_ids, cube_centre, cube_reach, neighbourhood);
         // One pass for all corners pays when most of them are needed.
-        const bool whole_cube = 2 * needed >= AmlsSurface<D>::kCubeCorners;
+        const bool whole_cube = 2 * cube_needed >= AmlsSurface<D>::kCubeCorners;
         if (whole_cube) surface.evaluate_cube(neighbourhood, corners, corner_values);
         for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
-          if (!(flags_[slots[v]] & kNeeded)) continue;
-          values_[slots[v]] = whole_cube ? corner_values[v] : surface.evaluate_in(neighbourhood, corners[v]);
-          flags_[slots[v]] |= sign_flags(values_[slots[v]]);
+          if (!((brick_needed >> locals[v]) & 1)) continue;
+          const Evaluation<D>& value = values_[first + locals[v]] =
+              whole_cube ? corner_values[v] : surface.evaluate_in(neighbourhood, corners[v]);
+          const auto bit = static_cast<Mask>(Mask{1} << locals[v]);
+          if (value.defined) signs.defined |= bit;
+          if (value.defined && value.value >= 0.0) signs.positive |= bit;
         }
       });
     }
   });
-  std::size_t undefined = 0;  // in a local, which the byte stores cannot alias
-  for (const std::uint8_t f : flags_) undefined += (f & (kNeeded | kDefined)) == kNeeded ? 1 : 0;
-  stats_.undefined_vertices = undefined;
+  for (std::size_t b = 0; b < signs_.size(); ++b)
+    stats_.undefined_vertices += static_cast<std::size_t>(std::popcount(static_cast<Mask>(needed[b] & ~signs_[b].defined)));
   function_updated_ = true;
 }
 
 template <int D>
 const Evaluation<D>* Resampler<D>::vertex_value(const IVec<D>& vertex) const {
   const std::optional<std::uint32_t> slot = field_.find(vertex);
-  return slot && (flags_[*slot] & kNeeded) ? &values_[*slot] : nullptr;
+  if (!slot) return nullptr;
+  const bool needed = (walk_.needed()[*slot / VertexField<D>::kBrickVolume] >> (*slot % VertexField<D>::kBrickVolume)) & 1;
+  return needed ? &values_[*slot] : nullptr;
 }
 
 template <int D>
 void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
+  static constexpr BrickEdgeMasks<D> kEdges;
   constexpr std::int64_t side = VertexField<D>::kBrickSide;
-  const std::size_t bricks = field_.slots() / VertexField<D>::kBrickVolume;
+  constexpr std::uint32_t volume = VertexField<D>::kBrickVolume;
+  constexpr auto last = static_cast<std::uint32_t>(side - 1);  // the last layer's coordinate
   std::vector<std::vector<Crossing>> found(static_cast<std::size_t>(pool.threads()));
-  pool.parallel_for(bricks, [&](std::size_t begin, std::size_t end, int block) {
+  pool.parallel_for(signs_.size(), [&](std::size_t begin, std::size_t end, int block) {
     std::vector<Crossing>& out = found[static_cast<std::size_t>(block)];
     for (std::size_t b = begin; b < end; ++b) {
-      const auto first = static_cast<std::uint32_t>(b * VertexField<D>::kBrickVolume);
+      const auto first = static_cast<std::uint32_t>(b * volume);
       const IVec<D> origin = field_.vertex_of(first);
-      // The bricks across the upper faces, where the last layer's edges end.
-      std::array<std::optional<std::uint32_t>, D> upper;
-      for (int axis = 0; axis < D; ++axis) upper[axis] = field_.find(origin + side * IVec<D>::Unit(axis));
-      for_each_index_in_box<D>(IVec<D>::Zero(), IVec<D>::Constant(side - 1), [&](const IVec<D>& offset) {
-        const std::uint32_t from = VertexField<D>::slot_in_brick(first, offset);
-        const std::uint8_t f0 = flags_[from];
-        if (!(f0 & kDefined)) return;
-        for (int axis = 0; axis < D; ++axis) {
-          IVec<D> next = offset;
-          std::uint32_t to_first = first;
-          if (++next[axis] == side) {
-            if (!upper[axis]) continue;
-            next[axis] = 0;
-            to_first = *upper[axis];
-          }
-          const std::uint32_t to = VertexField<D>::slot_in_brick(to_first, next);
-          const std::uint8_t f1 = flags_[to];
-          if ((f1 & kDefined) && ((f0 ^ f1) & kPositive))
-            out.push_back({from, to, axis, estimated_crossing(values_[from], values_[to], axis, h, variant)});
+      const std::uint64_t defined = signs_[b].defined;
+      const std::uint64_t positive = signs_[b].positive;
+      // Per axis, the vertices whose edge along it has a defined sign change:
+      // edge masks, so that each brick is a few word operations.
+      std::array<std::uint64_t, D> crossing;
+      std::array<std::uint32_t, D> upper_first{};  // the brick across the upper face, where the last layer's edges end
+      std::uint64_t any = 0;
+      for (int axis = 0; axis < D; ++axis) {
+        const std::uint32_t stride = VertexField<D>::slot_in_brick(0, IVec<D>::Unit(axis));
+        crossing[axis] = defined & (defined >> stride) & (positive ^ (positive >> stride)) & kEdges.inner[axis];
+        if (const std::optional<std::uint32_t> upper = field_.find(origin + side * IVec<D>::Unit(axis))) {
+          const BrickSigns& next = signs_[*upper / volume];
+          const std::uint32_t last_layer = last * stride;
+          const std::uint64_t next_defined = (next.defined & kEdges.first_layer[axis]) << last_layer;
+          const std::uint64_t next_positive = (next.positive & kEdges.first_layer[axis]) << last_layer;
+          crossing[axis] |= defined & next_defined & (positive ^ next_positive);
+          upper_first[axis] = *upper;
         }
-      });
+        any |= crossing[axis];
+      }
+      // In slot order, then axis order: the order of a walk over the brick's vertices.
+      for (; any != 0; any &= any - 1) {
+        const auto l = static_cast<std::uint32_t>(std::countr_zero(any));
+        for (int axis = 0; axis < D; ++axis) {
+          if (!((crossing[axis] >> l) & 1)) continue;
+          const std::uint32_t stride = VertexField<D>::slot_in_brick(0, IVec<D>::Unit(axis));
+          const std::uint32_t from = first + l;
+          const std::uint32_t to =
+              (kEdges.inner[axis] >> l) & 1 ? from + stride : upper_first[axis] + l - last * stride;
+          out.push_back({from, to, axis, estimated_crossing(values_[from], values_[to], axis, h, variant)});
+        }
+      }
     }
   });
   crossings_.clear();
@@ -247,7 +256,7 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   // keep_closest_crossings() on the crossings left chooses as it would on all
   // of them.
   const double eps = uncertainty;
-  best_bound_.assign(flags_.size(), std::numeric_limits<double>::infinity());
+  best_bound_.assign(field_.slots(), std::numeric_limits<double>::infinity());
   for (const Crossing& x : crossings_) {
     if (x.t + eps < 0.5) best_bound_[x.from] = std::min(best_bound_[x.from], x.t + eps);
     if (x.t - eps >= 0.5) best_bound_[x.to] = std::min(best_bound_[x.to], 1.0 - x.t + eps);
@@ -274,7 +283,7 @@ void Resampler<D>::keep_closest_crossings() {
   // resample 2D spacings stay within [0.59 h, 1.40 h] on the clover scene (the
   // walk-order rule reached 1.61 h) and the 256^2 vortex error drops by a fifth.
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  closest_crossing_.assign(flags_.size(), kNone);
+  closest_crossing_.assign(field_.slots(), kNone);
   auto nearer_end = [](const Crossing& x) { return x.t < 0.5 ? x.from : x.to; };
   auto distance_to_nearer_end = [](const Crossing& x) { return std::min(x.t, 1.0 - x.t); };
   for (std::uint32_t k = 0; k < crossings_.size(); ++k) {

@@ -121,7 +121,15 @@ class Resampler {
   IdLists brick_points_;                // per brick: the points within Delta of its box
   std::vector<Evaluation<D>> values_;   // slot -> F (valid where needed)
   WalkMarks<D> walk_;                   // the vertices the walk reads
-  std::vector<std::uint8_t> flags_;     // slot -> NEEDED | DEFINED | POSITIVE
+  // Per brick, one bit per vertex (by local index): where F is defined, and
+  // where it is also >= 0 (a zero counts as positive). The walk reads these
+  // rather than the values, a few words per brick.
+  using Mask = typename WalkMarks<D>::Mask;
+  struct BrickSigns {
+    Mask defined = 0;
+    Mask positive = 0;
+  };
+  std::vector<BrickSigns> signs_;
   std::vector<Crossing> crossings_;
   std::vector<double> best_bound_;               // slot -> bound on its nearest crossing's distance (estimated)
   std::vector<std::uint32_t> closest_crossing_;  // slot -> the crossing HAVECLOSEPOINT keeps there
