@@ -259,12 +259,13 @@ void AmlsSurface<D>::evaluate_cube_with(const Neighbourhood<D>& neighbourhood,
     const Vec<D>& normal = neighbourhood.normals[k];
     const double qq = q.squaredNorm();
     const double qn = q.dot(normal);
-    double dd[V], w[V];
+    double dd[V], s2[V], w[V];
     for (int v = 0; v < V; ++v) dd[v] = qq + yy[v];
     for (int a = 0; a < D; ++a)
       for (int v = 0; v < V; ++v) dd[v] -= 2.0 * q[a] * y[a][v];
+    for (int v = 0; v < V; ++v) s2[v] = dd[v] * inverse_r2;
+    weights_of_squared_ratios(s2, w);
     for (int v = 0; v < V; ++v) {
-      w[v] = weight_of_squared_ratio(dd[v] * inverse_r2);
       sum_w[v] += w[v];
       sum_dd[v] += w[v] * dd[v];
       sum_qn[v] += w[v] * qn;

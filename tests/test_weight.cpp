@@ -30,3 +30,17 @@ TEST_CASE("the weight is max(0, 1 - s^2)^4 bit for bit, zero from s = 1 on") {
   }
   CHECK(weight_of_squared_ratio(0.0) == 1.0);
 }
+
+TEST_CASE("the packed weights are the single weights bit for bit") {
+  const double s2s[8] = {-0.0, 0.25, 1.0 - 1e-16, 1.0, 3.0, std::numeric_limits<double>::infinity(), std::nan(""), 0.7};
+  volatile double opaque[8];
+  for (int i = 0; i < 8; ++i) opaque[i] = s2s[i];
+  double s2[8], w[8];
+  for (int i = 0; i < 8; ++i) s2[i] = opaque[i];
+  weights_of_squared_ratios(s2, w);
+  for (int i = 0; i < 8; ++i) {
+    CAPTURE(s2[i]);
+    const double expected = weight_of_squared_ratio(s2[i]);
+    CHECK(std::memcmp(&w[i], &expected, sizeof expected) == 0);
+  }
+}
