@@ -3,6 +3,7 @@
 // bucketed by cell in one sorted array (no linked lists); a table takes a cell
 // to its run of points. Cells are as wide as the largest query radius, so a
 // query inspects at most 3^D cells whatever the grid spacing.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -67,23 +68,34 @@ class PointIndex {
     if (!cells_) return;
     const double r2 = radius * radius;
     std::size_t kept = out.size();
+    // The cells' runs are collected first and copied a batch at a time, so
+    // that `out` grows (and zero-fills) once per batch, not once per cell.
+    std::array<Run, kGatherBatch> batch;
+    std::size_t batched = 0;
+    std::size_t batched_length = 0;
+    auto copy_batch = [&] {
+      // Room for every id, every id written and only those within reach
+      // kept: no branch on the distance, which is hard to predict.
+      out.resize(kept + batched_length);
+      std::uint32_t* ids = out.data();
+      for (std::size_t r = 0; r < batched; ++r)
+        for (std::uint32_t k = batch[r].begin; k < batch[r].end; ++k) {
+          const Vec<D>& q = positions_[k];
+          const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
+          ids[kept] = ids_[k];
+          kept += outside.squaredNorm() <= r2 ? 1 : 0;
+        }
+      batched = batched_length = 0;
+    };
     for_each_run_in_cells(cells_->cell_of(lo - Vec<D>::Constant(radius)),
                           cells_->cell_of(hi + Vec<D>::Constant(radius)), [&](const Run& run) {
-                            // Room for the whole run, every id written and only those
-                            // within reach kept: no branch on the distance, which is hard
-                            // to predict.
-                            out.resize(kept + (run.end - run.begin));
-                            std::uint32_t* ids = out.data();
-                            for (std::uint32_t k = run.begin; k < run.end; ++k) {
-                              const Vec<D>& q = positions_[k];
-                              const Vec<D> outside = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
-                              ids[kept] = ids_[k];
-                              kept += outside.squaredNorm() <= r2 ? 1 : 0;
-                            }
+                            if (batched == batch.size()) copy_batch();
+                            batch[batched++] = run;
+                            batched_length += run.end - run.begin;
                           });
+    copy_batch();
     out.resize(kept);
   }
-
   // Whether the cell table is the dense array (else the hash map); see below.
   bool uses_dense_table() const { return !dense_.empty(); }
 
@@ -93,6 +105,8 @@ class PointIndex {
   // refilling it at every build stay small next to the points' own.
   static constexpr double kDenseCellsPerPoint = 32.0;
   static constexpr double kDenseMinCells = 4096.0;
+  // Runs gather() collects before copying their ids: a query of 3^D cells fits.
+  static constexpr std::size_t kGatherBatch = 32;
 
   struct Run {
     std::uint32_t begin = 0;
