@@ -1,5 +1,6 @@
 #include "core/flow_deformation.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -33,21 +34,36 @@ void FlowDeformation<D>::deform(PointSet<D>& points, double t0, double t1, Threa
     const double t = t0 + s * dt;
     amplitudes[static_cast<std::size_t>(s)] = {v.amplitude(t), v.amplitude(t + 0.5 * dt), v.amplitude(t + dt)};
   }
+  // Points are advanced kLanes at a time, each RK4 stage for all of them
+  // before the next stage: a stage of one point waits on the previous one's
+  // long chains of dependent multiply-adds (the field's sines and cosines),
+  // and those of other points fill the wait. Each point still goes through
+  // the same operations, so the result is the same bit for bit.
+  constexpr std::size_t kLanes = 4;
   pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t i = begin; i < end; ++i) {
-      Vec<D> x = points.positions[i];
-      Vec<D> n = points.normals[i];
-      for (const auto& [start, middle, finish] : amplitudes) {
-        const Rate k1 = rate(x, n, start);
-        const Rate k2 = rate(x + 0.5 * dt * k1.x, n + 0.5 * dt * k1.n, middle);
-        const Rate k3 = rate(x + 0.5 * dt * k2.x, n + 0.5 * dt * k2.n, middle);
-        const Rate k4 = rate(x + dt * k3.x, n + dt * k3.n, finish);
-        x += dt / 6.0 * (k1.x + 2.0 * k2.x + 2.0 * k3.x + k4.x);
-        n += dt / 6.0 * (k1.n + 2.0 * k2.n + 2.0 * k3.n + k4.n);
+    for (std::size_t first = begin; first < end; first += kLanes) {
+      const std::size_t lanes = std::min(kLanes, end - first);
+      std::array<Vec<D>, kLanes> x, n;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        x[l] = points.positions[first + l];
+        n[l] = points.normals[first + l];
       }
-      points.positions[i] = x;
-      const double length = n.norm();
-      if (length > 0.0 && std::isfinite(length)) points.normals[i] = n / length;
+      for (const auto& [start, middle, finish] : amplitudes) {
+        std::array<Rate, kLanes> k1, k2, k3, k4;
+        for (std::size_t l = 0; l < lanes; ++l) k1[l] = rate(x[l], n[l], start);
+        for (std::size_t l = 0; l < lanes; ++l) k2[l] = rate(x[l] + 0.5 * dt * k1[l].x, n[l] + 0.5 * dt * k1[l].n, middle);
+        for (std::size_t l = 0; l < lanes; ++l) k3[l] = rate(x[l] + 0.5 * dt * k2[l].x, n[l] + 0.5 * dt * k2[l].n, middle);
+        for (std::size_t l = 0; l < lanes; ++l) k4[l] = rate(x[l] + dt * k3[l].x, n[l] + dt * k3[l].n, finish);
+        for (std::size_t l = 0; l < lanes; ++l) {
+          x[l] += dt / 6.0 * (k1[l].x + 2.0 * k2[l].x + 2.0 * k3[l].x + k4[l].x);
+          n[l] += dt / 6.0 * (k1[l].n + 2.0 * k2[l].n + 2.0 * k3[l].n + k4[l].n);
+        }
+      }
+      for (std::size_t l = 0; l < lanes; ++l) {
+        points.positions[first + l] = x[l];
+        const double length = n[l].norm();
+        if (length > 0.0 && std::isfinite(length)) points.normals[first + l] = n[l] / length;
+      }
     }
   });
 }
