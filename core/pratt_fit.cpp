@@ -38,9 +38,9 @@ constexpr int kMaxInverseIterations = 12;
 constexpr double kConverged = 1e-12;
 constexpr double kRegularization = 1e-13;
 
-// Whether points whose second moment about p is `scatter` span a line (2D) or
-// a plane (3D): its second-largest eigenvalue is not negligible next to the
-// largest. By invariants rather than an eigensolver: in 3D the sum of the
+// Whether points whose second moment about p is `scatter` (symmetric) span a
+// line (2D) or a plane (3D): its second-largest eigenvalue is not negligible
+// next to the largest. By invariants rather than an eigensolver: in 3D the sum of the
 // principal 2 x 2 minors over the squared trace is that ratio within a factor
 // of 27, plenty for a threshold that only separates zero from rounding noise.
 template <int D>
@@ -60,16 +60,26 @@ bool spans_hyperplane(const Mat<D>& scatter) {
 }  // namespace
 
 template <int D>
+typename PrattFit<D>::Matrix PrattFit<D>::a() const {
+  Matrix a;
+  int k = 0;
+  for (int j = 0; j < kBasis; ++j)
+    for (int i = j; i < kBasis; ++i) a(i, j) = a(j, i) = lower_[k++];
+  return a;
+}
+
+template <int D>
 FitStatus PrattFit<D>::solve(const Vec<D>& carried, Vec<D>& normal) {
   if (count_ < D + 1) return FitStatus::too_few_neighbours;
 
   // The neighbourhood must span a line (2D) or a plane (3D); otherwise the fit's
   // normal is not determined by the data.
-  if (!spans_hyperplane<D>(scatter_)) return FitStatus::degenerate;
+  const Matrix a = this->a();
+  if (!spans_hyperplane<D>(a.template block<D, D>(1, 1))) return FitStatus::degenerate;
 
   Coeffs start = Coeffs::Zero();
   start.template segment<D>(1) = carried;
-  if (!solve_by_inverse_iteration(start) && !solve_by_eigen_decomposition()) return FitStatus::no_solution;
+  if (!solve_by_inverse_iteration(a, start) && !solve_by_eigen_decomposition(a)) return FitStatus::no_solution;
 
   Vec<D> b = alpha_.template segment<D>(1);
   const double length = b.norm();
@@ -85,13 +95,13 @@ FitStatus PrattFit<D>::solve(const Vec<D>& carried, Vec<D>& normal) {
 // magnitude; the caller falls back when that one is not admissible (negative,
 // i.e. alpha^T C alpha <= 0) or when A is not positive definite.
 template <int D>
-bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
+bool PrattFit<D>::solve_by_inverse_iteration(const Matrix& a, const Coeffs& start) {
   // Points exactly on a sphere or plane make A singular (that sphere is its
   // null vector, with lambda = 0). A relative diagonal shift of kRegularization
   // makes it invertible and moves the solution by about as much.
   Matrix a_inverse;
-  if (!invert_positive_definite<kBasis>(a_, a_inverse) &&
-      !invert_positive_definite<kBasis>(a_ + Matrix::Identity() * (kRegularization * a_.trace() / kBasis), a_inverse))
+  if (!invert_positive_definite<kBasis>(a, a_inverse) &&
+      !invert_positive_definite<kBasis>(a + Matrix::Identity() * (kRegularization * a.trace() / kBasis), a_inverse))
     return false;
   // A^-1 C once, so that each iteration is a small matrix-vector product. C
   // maps e_0 to -2 e_last, e_last to -2 e_0 and keeps the others (see
@@ -126,8 +136,7 @@ bool PrattFit<D>::solve_by_inverse_iteration(const Coeffs& start) {
 // The general case: eigenpairs of C^-1 A (real for this pencil), keeping the
 // smallest non-negative lambda whose eigenvector satisfies alpha^T C alpha > 0.
 template <int D>
-bool PrattFit<D>::solve_by_eigen_decomposition() {
-  const Matrix a = full_a();
+bool PrattFit<D>::solve_by_eigen_decomposition(const Matrix& a) {
   Matrix c_inverse_a = a;
   c_inverse_a.row(0) = -0.5 * a.row(kBasis - 1);
   c_inverse_a.row(kBasis - 1) = -0.5 * a.row(0);

@@ -7,6 +7,7 @@
 // with the smallest non-negative lambda. Coordinates are centred at the point and
 // scaled by Delta, so A is well conditioned and the normal is b / |b|.
 #include <Eigen/Core>
+#include <array>
 
 #include "core/vec.hpp"
 
@@ -35,13 +36,15 @@ class PrattFit {
     q[0] = 1.0;
     q.template segment<D>(1) = u;
     q[D + 1] = u.squaredNorm();
-    // Only the lower triangle: the Cholesky factorization reads no more, and
-    // full_a() mirrors it where the whole matrix is needed.
+    // Only the lower triangle, packed column by column: the Cholesky
+    // factorization reads no more, and a() unpacks it. Packed, consecutive
+    // entries pair up for SSE2 (in 2D the ten are five pairs) and the fit
+    // holds no padding for the loop to zero.
+    int k = 0;
     for (int j = 0; j < kBasis; ++j) {
       const double wq = w * q[j];
-      for (int i = j; i < kBasis; ++i) a_(i, j) += wq * q[i];
+      for (int i = j; i < kBasis; ++i) lower_[k++] += wq * q[i];
     }
-    scatter_.noalias() += w * u * u.transpose();
     ++count_;
   }
 
@@ -54,13 +57,16 @@ class PrattFit {
   const Coeffs& coefficients() const { return alpha_; }
 
  private:
-  bool solve_by_inverse_iteration(const Coeffs& start);
-  bool solve_by_eigen_decomposition();
+  bool solve_by_inverse_iteration(const Matrix& a, const Coeffs& start);
+  bool solve_by_eigen_decomposition(const Matrix& a);
 
-  Matrix full_a() const { return a_.template selfadjointView<Eigen::Lower>(); }
+  // A, whole and symmetric.
+  Matrix a() const;
 
-  Matrix a_ = Matrix::Zero();  // lower triangle of A
-  Mat<D> scatter_ = Mat<D>::Zero();  // second moment about the point, for the degeneracy test
+  // A's lower triangle, column by column. Its block of rows and columns 1..D
+  // is the neighbours' weighted second moment about the point, which the
+  // degeneracy test reads.
+  std::array<double, kBasis*(kBasis + 1) / 2> lower_{};
   int count_ = 0;
   Coeffs alpha_ = Coeffs::Zero();
 };
