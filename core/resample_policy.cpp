@@ -152,7 +152,9 @@ SamplingQuality sampling_quality(const PointSet<D>& points, double h, double rad
   // candidate neighbours (every point of the 3^D cells around their cell).
   const std::vector<std::uint32_t>& order = index.order();
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
-    PartialQuality& result = partial[static_cast<std::size_t>(block)];
+    // Accumulated in a local and stored once: the blocks' entries share a
+    // cache line, and writing them per point would bounce it between cores.
+    PartialQuality result = partial[static_cast<std::size_t>(block)];
     // The candidates' ids, positions and normals, side by side.
     std::vector<std::uint32_t> candidates;
     std::vector<Vec<D>> candidate_positions;
@@ -189,6 +191,7 @@ SamplingQuality sampling_quality(const PointSet<D>& points, double h, double rad
       }
       result.gap2 = gap2_above<D>(neighbours, distances2, result.gap2);
     }
+    partial[static_cast<std::size_t>(block)] = result;
   });
   for (const PartialQuality& p : partial) {
     quality.gap = std::max(quality.gap, p.gap2);

@@ -144,9 +144,14 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
   constexpr std::int64_t side = VertexField<D>::kBrickSide;
   constexpr std::uint32_t volume = VertexField<D>::kBrickVolume;
   constexpr auto last = static_cast<std::uint32_t>(side - 1);  // the last layer's coordinate
-  std::vector<std::vector<Crossing>> found(static_cast<std::size_t>(pool.threads()));
+  // A cache line each: blocks append at the same time, and vector headers
+  // sharing a line would bounce it between cores.
+  struct alignas(64) BlockCrossings {
+    std::vector<Crossing> list;
+  };
+  std::vector<BlockCrossings> found(static_cast<std::size_t>(pool.threads()));
   pool.parallel_for(signs_.size(), [&](std::size_t begin, std::size_t end, int block) {
-    std::vector<Crossing>& out = found[static_cast<std::size_t>(block)];
+    std::vector<Crossing>& out = found[static_cast<std::size_t>(block)].list;
     for (std::size_t b = begin; b < end; ++b) {
       const auto first = static_cast<std::uint32_t>(b * volume);
       const IVec<D> origin = field_.vertex_of(first);
@@ -185,7 +190,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
     }
   });
   crossings_.clear();
-  for (const std::vector<Crossing>& part : found) crossings_.insert(crossings_.end(), part.begin(), part.end());
+  for (const BlockCrossings& part : found) crossings_.insert(crossings_.end(), part.list.begin(), part.list.end());
   stats_.crossings = crossings_.size();
 }
 
@@ -206,6 +211,9 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
   // orientation filter keeps the same points: see Neighbourhood::consistent).
   const double reuse_margin = kReuseMargin * h;
   pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int block) {
+    // Counted locally and added once: the blocks' counters share a cache line.
+    std::size_t block_evaluations = 0;
+    std::size_t block_fallbacks = 0;
     Neighbourhood<D> candidates;
     std::size_t candidates_brick = std::numeric_limits<std::size_t>::max();
     Vec<D> candidates_centre = Vec<D>::Zero();
@@ -229,14 +237,16 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         }
         root = locate_segment_root<D>([&](const Vec<D>& y) { return surface.evaluate_in(candidates, y); }, start,
                                       direction, f0, f1, x.t, x.axis);
-        evaluations[static_cast<std::size_t>(block)] += static_cast<std::size_t>(root.evaluations);
-        fallbacks[static_cast<std::size_t>(block)] += root.fallback ? 1 : 0;
+        block_evaluations += static_cast<std::size_t>(root.evaluations);
+        block_fallbacks += root.fallback ? 1 : 0;
       } else {
         root = interpolate_segment_root(f0, f1, x.axis);
       }
       x.t = root.t;
       x.normal = root.normal;
     }
+    evaluations[static_cast<std::size_t>(block)] += block_evaluations;
+    fallbacks[static_cast<std::size_t>(block)] += block_fallbacks;
   });
   for (std::size_t b = 0; b < evaluations.size(); ++b) {
     stats_.root_evaluations += evaluations[b];
