@@ -266,7 +266,10 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   // keep_closest_crossings() on the crossings left chooses as it would on all
   // of them.
   const double eps = uncertainty;
-  best_bound_.assign(field_.slots(), std::numeric_limits<double>::infinity());
+  constexpr double kNoBound = std::numeric_limits<double>::infinity();
+  // All kNoBound between calls (entries are reset below), so that only the
+  // crossings' vertices are touched, not every slot.
+  best_bound_.resize(std::max(best_bound_.size(), field_.slots()), kNoBound);
   for (const Crossing& x : crossings_) {
     if (x.t + eps < 0.5) best_bound_[x.from] = std::min(best_bound_[x.from], x.t + eps);
     if (x.t - eps >= 0.5) best_bound_[x.to] = std::min(best_bound_[x.to], 1.0 - x.t + eps);
@@ -280,6 +283,9 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   for (const Crossing& x : crossings_)
     if (may_win(x)) crossings_[left++] = x;
   crossings_.resize(left);
+  // Each bound set above is that of a crossing kept (it may win where its own
+  // bound is), so resetting the kept crossings' ends resets them all.
+  for (const Crossing& x : crossings_) best_bound_[x.from] = best_bound_[x.to] = kNoBound;
   stats_.located = left;
 }
 
@@ -293,7 +299,8 @@ void Resampler<D>::keep_closest_crossings() {
   // resample 2D spacings stay within [0.59 h, 1.40 h] on the clover scene (the
   // walk-order rule reached 1.61 h) and the 256^2 vortex error drops by a fifth.
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  closest_crossing_.assign(field_.slots(), kNone);
+  // All kNone between calls (entries are reset below): only the crossings' vertices are touched.
+  closest_crossing_.resize(std::max(closest_crossing_.size(), field_.slots()), kNone);
   auto nearer_end = [](const Crossing& x) { return x.t < 0.5 ? x.from : x.to; };
   auto distance_to_nearer_end = [](const Crossing& x) { return std::min(x.t, 1.0 - x.t); };
   for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
@@ -302,8 +309,12 @@ void Resampler<D>::keep_closest_crossings() {
       closest = k;
   }
   std::size_t kept = 0;
-  for (std::uint32_t k = 0; k < crossings_.size(); ++k)
-    if (closest_crossing_[nearer_end(crossings_[k])] == k) crossings_[kept++] = crossings_[k];
+  for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
+    std::uint32_t& closest = closest_crossing_[nearer_end(crossings_[k])];
+    if (closest != k) continue;
+    crossings_[kept++] = crossings_[k];
+    closest = kNone;  // later crossings there lose either way; every entry set is reset here
+  }
   crossings_.resize(kept);
 }
 
