@@ -68,7 +68,22 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     std::vector<std::uint32_t> candidates;
     IVec<D> candidates_cell = IVec<D>::Zero();
     bool have_candidates = false;
+    // Fits are solved kLanes at a time, after their sums: a solve is a long
+    // chain of dependent square roots and divisions, and the next fits'
+    // independent chains fill its waits (as in FlowDeformation). The same
+    // operations per point, so the same bits.
+    constexpr std::size_t kLanes = 4;
+    std::array<PrattFit<D>, kLanes> fits;
+    std::size_t batch_begin = begin;
+    auto solve_batch = [&](std::size_t batch_end) {
+      for (std::size_t j = batch_begin; j < batch_end; ++j) {
+        pseudo_normals_[j] = points_.normals[j];
+        status[j] = fits[j - batch_begin].solve(points_.normals[j], pseudo_normals_[j]);
+      }
+      batch_begin = batch_end;
+    };
     for (std::size_t i = begin; i < end; ++i) {
+      if (i - batch_begin == kLanes) solve_batch(i);
       const Vec<D>& p = points_.positions[i];
       const IVec<D> cell = index_.cell_of(p);
       if (!have_candidates || cell != candidates_cell) {
@@ -79,7 +94,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
         candidates_cell = cell;
       }
       const Vec<D>& own = points_.normals[i];
-      PrattFit<D> fit;
+      PrattFit<D>& fit = fits[i - batch_begin] = PrattFit<D>();
       std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.start(i, block) : nullptr;
       for (const std::uint32_t id : candidates) {
         const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
@@ -90,9 +105,8 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
         fit.add(u, weight_of_squared_ratio(s2));
       }
       if (listed) neighbours_.finish(i, block);
-      pseudo_normals_[i] = points_.normals[i];
-      status[i] = fit.solve(points_.normals[i], pseudo_normals_[i]);
     }
+    solve_batch(end);
   });
   NormalStats stats;
   for (FitStatus s : status) stats.count(s);
