@@ -8,6 +8,8 @@
 #include <span>
 #include <vector>
 
+#include "core/thread_pool.hpp"
+
 namespace amls {
 
 class IdLists {
@@ -16,24 +18,24 @@ class IdLists {
   // runs filled by up to `blocks` blocks.
   void reset(std::size_t items, int blocks) {
     lists_.resize(static_cast<std::size_t>(blocks));
-    for (BlockList& list : lists_) list.ids.clear();
+    for (OwnCacheLine<std::vector<std::uint32_t>>& list : lists_) list.value.clear();
     runs_.assign(items, {});
   }
 
   // Called by block `block` for item i: the ids it appends to the returned
   // vector until it calls finish(i, block) are i's.
   std::vector<std::uint32_t>& start(std::size_t i, int block) {
-    std::vector<std::uint32_t>& list = lists_[static_cast<std::size_t>(block)].ids;
+    std::vector<std::uint32_t>& list = lists_[static_cast<std::size_t>(block)].value;
     runs_[i] = {block, static_cast<std::uint32_t>(list.size()), static_cast<std::uint32_t>(list.size())};
     return list;
   }
   void finish(std::size_t i, int block) {
-    runs_[i].end = static_cast<std::uint32_t>(lists_[static_cast<std::size_t>(block)].ids.size());
+    runs_[i].end = static_cast<std::uint32_t>(lists_[static_cast<std::size_t>(block)].value.size());
   }
 
   std::span<const std::uint32_t> of(std::size_t i) const {
     const Run& r = runs_[i];
-    return std::span(lists_[static_cast<std::size_t>(r.block)].ids).subspan(r.begin, r.end - r.begin);
+    return std::span(lists_[static_cast<std::size_t>(r.block)].value).subspan(r.begin, r.end - r.begin);
   }
 
  private:
@@ -42,13 +44,8 @@ class IdLists {
     std::uint32_t begin = 0;
     std::uint32_t end = 0;
   };
-  // A cache line each: blocks append to their own lists at the same time,
-  // and vector headers sharing a line would bounce it between cores.
-  struct alignas(64) BlockList {
-    std::vector<std::uint32_t> ids;
-  };
-  std::vector<BlockList> lists_;  // per block
-  std::vector<Run> runs_;                          // per item
+  std::vector<OwnCacheLine<std::vector<std::uint32_t>>> lists_;  // per block, appended to at the same time
+  std::vector<Run> runs_;                                        // per item
 };
 
 }  // namespace amls

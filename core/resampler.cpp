@@ -24,14 +24,17 @@ IVec<D> corner_offset(int v) {
 }
 
 // Bit masks over a brick's vertices (VertexField::local_index order) for the
-// edges along `axis`: kInner[axis] marks the vertices whose edge ends in the
-// same brick (coordinate < 3 along the axis), kFirstLayer[axis] those with
-// coordinate 0, where the edges from the brick below end.
+// edges along each axis: inner[axis] marks the vertices whose edge ends in the
+// same brick (coordinate < 3 along the axis), first_layer[axis] those with
+// coordinate 0, where the edges from the brick below end; stride[axis] is the
+// step in local index along the axis.
 template <int D>
 struct BrickEdgeMasks {
   std::array<std::uint64_t, D> inner{};
   std::array<std::uint64_t, D> first_layer{};
+  std::array<std::uint32_t, D> stride{};
   constexpr BrickEdgeMasks() {
+    for (int axis = 0; axis < D; ++axis) stride[axis] = std::uint32_t{1} << (VertexField<D>::kBrickShift * axis);
     for (std::uint32_t l = 0; l < VertexField<D>::kBrickVolume; ++l)
       for (int axis = 0; axis < D; ++axis) {
         const std::uint32_t coordinate = (l >> (VertexField<D>::kBrickShift * axis)) % VertexField<D>::kBrickSide;
@@ -47,7 +50,7 @@ struct BrickEdgeMasks {
 // guess for the exact one.
 template <int D>
 double estimated_crossing(const Evaluation<D>& f0, const Evaluation<D>& f1, int axis, double h, Variant variant) {
-  if (variant == Variant::interpolated) return f0.value / (f0.value - f1.value);
+  if (variant == Variant::interpolated) return linear_segment_root(f0, f1);
   return estimate_segment_root<D>(f0, f1, Vec<D>(h * Vec<D>::Unit(axis)));
 }
 
@@ -144,14 +147,9 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
   constexpr std::int64_t side = VertexField<D>::kBrickSide;
   constexpr std::uint32_t volume = VertexField<D>::kBrickVolume;
   constexpr auto last = static_cast<std::uint32_t>(side - 1);  // the last layer's coordinate
-  // A cache line each: blocks append at the same time, and vector headers
-  // sharing a line would bounce it between cores.
-  struct alignas(64) BlockCrossings {
-    std::vector<Crossing> list;
-  };
-  std::vector<BlockCrossings> found(static_cast<std::size_t>(pool.threads()));
+  std::vector<OwnCacheLine<std::vector<Crossing>>> found(static_cast<std::size_t>(pool.threads()));
   pool.parallel_for(signs_.size(), [&](std::size_t begin, std::size_t end, int block) {
-    std::vector<Crossing>& out = found[static_cast<std::size_t>(block)].list;
+    std::vector<Crossing>& out = found[static_cast<std::size_t>(block)].value;
     for (std::size_t b = begin; b < end; ++b) {
       const auto first = static_cast<std::uint32_t>(b * volume);
       const IVec<D> origin = field_.vertex_of(first);
@@ -163,7 +161,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
       std::array<std::uint32_t, D> upper_first{};  // the brick across the upper face, where the last layer's edges end
       std::uint64_t any = 0;
       for (int axis = 0; axis < D; ++axis) {
-        const std::uint32_t stride = VertexField<D>::slot_in_brick(0, IVec<D>::Unit(axis));
+        const std::uint32_t stride = kEdges.stride[axis];
         crossing[axis] = defined & (defined >> stride) & (positive ^ (positive >> stride)) & kEdges.inner[axis];
         if (const std::optional<std::uint32_t> upper = field_.find(origin + side * IVec<D>::Unit(axis))) {
           const BrickSigns& next = signs_[*upper / volume];
@@ -180,7 +178,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
         const auto l = static_cast<std::uint32_t>(std::countr_zero(any));
         for (int axis = 0; axis < D; ++axis) {
           if (!((crossing[axis] >> l) & 1)) continue;
-          const std::uint32_t stride = VertexField<D>::slot_in_brick(0, IVec<D>::Unit(axis));
+          const std::uint32_t stride = kEdges.stride[axis];
           const std::uint32_t from = first + l;
           const std::uint32_t to =
               (kEdges.inner[axis] >> l) & 1 ? from + stride : upper_first[axis] + l - last * stride;
@@ -190,7 +188,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
     }
   });
   crossings_.clear();
-  for (const BlockCrossings& part : found) crossings_.insert(crossings_.end(), part.list.begin(), part.list.end());
+  for (const auto& part : found) crossings_.insert(crossings_.end(), part.value.begin(), part.value.end());
   stats_.crossings = crossings_.size();
 }
 

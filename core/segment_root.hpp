@@ -48,11 +48,17 @@ Vec<D> interpolated_normal(const Evaluation<D>& f0, const Evaluation<D>& f1, dou
                                  (1.0 - t) * f0.mean_normal + t * f1.mean_normal, fallback_axis);
 }
 
+// The zero of the linear interpolant of the end values, as a fraction of the segment.
+template <int D>
+double linear_segment_root(const Evaluation<D>& f0, const Evaluation<D>& f1) {
+  return f0.value / (f0.value - f1.value);
+}
+
 // The crossing by linear interpolation of the ends: the interpolated variant's point.
 template <int D>
 SegmentRoot<D> interpolate_segment_root(const Evaluation<D>& f0, const Evaluation<D>& f1, int fallback_axis) {
   SegmentRoot<D> out;
-  out.t = f0.value / (f0.value - f1.value);
+  out.t = linear_segment_root(f0, f1);
   out.normal = interpolated_normal(f0, f1, out.t, fallback_axis);
   return out;
 }
@@ -83,7 +89,7 @@ inline double hermite_root_guess(double v0, double v1, double s0, double s1, dou
 // HAVECLOSEPOINT on it (core/resampler.hpp).
 template <int D>
 double estimate_segment_root(const Evaluation<D>& f0, const Evaluation<D>& f1, const Vec<D>& step) {
-  const double linear_t = f0.value / (f0.value - f1.value);
+  const double linear_t = linear_segment_root(f0, f1);
   const double hermite_t = hermite_root_guess(f0.value, f1.value, f0.gradient.dot(step), f1.gradient.dot(step), linear_t);
   return std::isnan(hermite_t) ? linear_t : hermite_t;
 }
@@ -95,7 +101,7 @@ template <int D, typename Evaluate>
 SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, const Vec<D>& step,
                                    const Evaluation<D>& f0, const Evaluation<D>& f1, double guess, int fallback_axis) {
   SegmentRoot<D> out;
-  const double linear_t = f0.value / (f0.value - f1.value);
+  const double linear_t = linear_segment_root(f0, f1);
   // The evaluation with the smallest |F| so far: the root's, at the end.
   double best_t = std::abs(f0.value) <= std::abs(f1.value) ? 0.0 : 1.0;
   Evaluation<D> best = best_t == 0.0 ? f0 : f1;

@@ -28,6 +28,14 @@
 
 namespace amls {
 
+// A block's own entry in a per-block array that the blocks write at the same
+// time (a list they append to, say): a cache line to itself, since entries
+// sharing a line would bounce it between the cores.
+template <typename T>
+struct alignas(64) OwnCacheLine {
+  T value;
+};
+
 // Thrown by ThreadPool::parallel_for when its cancellation check asked it to stop.
 class Cancelled : public std::exception {
  public:
