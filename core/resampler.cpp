@@ -268,18 +268,22 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   // All kNoBound between calls (entries are reset below), so that only the
   // crossings' vertices are touched, not every slot.
   best_bound_.resize(std::max(best_bound_.size(), field_.slots()), kNoBound);
+  // Whether a crossing is nearer to one end or the other is a coin toss, so
+  // both loops select rather than branch.
   for (const Crossing& x : crossings_) {
-    if (x.t + eps < 0.5) best_bound_[x.from] = std::min(best_bound_[x.from], x.t + eps);
-    if (x.t - eps >= 0.5) best_bound_[x.to] = std::min(best_bound_[x.to], 1.0 - x.t + eps);
+    const bool upper_half = x.t >= 0.5;
+    const bool certain = upper_half ? x.t - eps >= 0.5 : x.t + eps < 0.5;
+    const double bound = certain ? (upper_half ? 1.0 - x.t : x.t) + eps : kNoBound;
+    double& best = best_bound_[upper_half ? x.to : x.from];
+    best = std::min(best, bound);
   }
-  auto may_win = [&](const Crossing& x) {
-    const bool at_from = x.t - eps < 0.5 && x.t - eps <= best_bound_[x.from];
-    const bool at_to = x.t + eps >= 0.5 && 1.0 - x.t - eps <= best_bound_[x.to];
-    return at_from || at_to;
-  };
   std::size_t left = 0;
-  for (const Crossing& x : crossings_)
-    if (may_win(x)) crossings_[left++] = x;
+  for (const Crossing& x : crossings_) {
+    const bool at_from = (x.t - eps < 0.5) & (x.t - eps <= best_bound_[x.from]);
+    const bool at_to = (x.t + eps >= 0.5) & (1.0 - x.t - eps <= best_bound_[x.to]);
+    crossings_[left] = x;
+    left += static_cast<std::size_t>(at_from | at_to);
+  }
   crossings_.resize(left);
   // Each bound set above is that of a crossing kept (it may win where its own
   // bound is), so resetting the kept crossings' ends resets them all.
@@ -296,22 +300,27 @@ void Resampler<D>::keep_closest_crossings() {
   // between its neighbours instead of at one end of a gap: right after a
   // resample 2D spacings stay within [0.59 h, 1.40 h] on the clover scene (the
   // walk-order rule reached 1.61 h) and the 256^2 vortex error drops by a fifth.
-  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  // All kNone between calls (entries are reset below): only the crossings' vertices are touched.
-  closest_crossing_.resize(std::max(closest_crossing_.size(), field_.slots()), kNone);
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  // All kFar between calls (entries are reset below): only the crossings' vertices are touched.
+  closest_distance_.resize(std::max(closest_distance_.size(), field_.slots()), kFar);
+  closest_crossing_.resize(closest_distance_.size());
   auto nearer_end = [](const Crossing& x) { return x.t < 0.5 ? x.from : x.to; };
-  auto distance_to_nearer_end = [](const Crossing& x) { return std::min(x.t, 1.0 - x.t); };
+  // Selects, not branches: which crossing is nearer is unpredictable.
   for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
-    std::uint32_t& closest = closest_crossing_[nearer_end(crossings_[k])];
-    if (closest == kNone || distance_to_nearer_end(crossings_[k]) < distance_to_nearer_end(crossings_[closest]))
-      closest = k;
+    const Crossing& x = crossings_[k];
+    const std::uint32_t end = nearer_end(x);
+    const double distance = std::min(x.t, 1.0 - x.t);
+    const bool nearer = distance < closest_distance_[end];  // strictly: ties keep the first listed
+    closest_distance_[end] = nearer ? distance : closest_distance_[end];
+    closest_crossing_[end] = nearer ? k : closest_crossing_[end];
   }
   std::size_t kept = 0;
   for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
-    std::uint32_t& closest = closest_crossing_[nearer_end(crossings_[k])];
-    if (closest != k) continue;
-    crossings_[kept++] = crossings_[k];
-    closest = kNone;  // later crossings there lose either way; every entry set is reset here
+    const std::uint32_t end = nearer_end(crossings_[k]);
+    const bool closest = closest_crossing_[end] == k;
+    closest_distance_[end] = kFar;  // read no more in this call: every entry set above is reset here
+    crossings_[kept] = crossings_[k];
+    kept += static_cast<std::size_t>(closest);
   }
   crossings_.resize(kept);
 }

@@ -132,7 +132,8 @@ class Resampler {
   std::vector<BrickSigns> signs_;
   std::vector<Crossing> crossings_;
   std::vector<double> best_bound_;               // slot -> bound on its nearest crossing's distance (estimated)
-  std::vector<std::uint32_t> closest_crossing_;  // slot -> the crossing HAVECLOSEPOINT keeps there
+  std::vector<double> closest_distance_;         // slot -> its nearest crossing's distance (located)
+  std::vector<std::uint32_t> closest_crossing_;  // slot -> that crossing, which HAVECLOSEPOINT keeps
   ResampleStats stats_;
   bool function_updated_ = false;
 };
