@@ -36,6 +36,32 @@ TEST_CASE("find_root converges in a few steps from a good guess with slopes") {
   CHECK(r.evaluations <= 5);
 }
 
+TEST_CASE("find_root takes a short enough step's end as the root without evaluating it") {
+  // The slope estimate is 10 % off, as a fit's gradient may be: Newton's step
+  // from a guess 1e-7 off leaves about a tenth of that.
+  const double root = std::cbrt(0.2);
+  int evaluations = 0;
+  auto g = [&](double t) -> std::optional<RootSample> {
+    ++evaluations;
+    return RootSample{t * t * t - 0.2, 1.1 * 3.0 * t * t};
+  };
+  RootOptions options = tolerance(1e-13);
+  options.first_guess = root + 1e-7;
+  options.step_tolerance = 1e-5;
+  const RootResult quick = find_root(g, 0.0, 1.0, -0.2, 0.8, options);
+  REQUIRE(quick.ok);
+  CHECK(quick.evaluations == 1);
+  CHECK(evaluations == 1);
+  CHECK(std::abs(quick.t - root) < 2e-8);
+  CHECK(std::abs(quick.t - root) > 1e-12);  // not evaluated there: not converged to the tolerance
+  // Without the step tolerance the search goes on to the tolerance.
+  options.step_tolerance = 0.0;
+  const RootResult full = find_root(g, 0.0, 1.0, -0.2, 0.8, options);
+  REQUIRE(full.ok);
+  CHECK(full.evaluations > 1);
+  CHECK(full.t == doctest::Approx(root).epsilon(1e-12));
+}
+
 TEST_CASE("find_root still converges where the secant steps are poor") {
   // Nearly a step function: secants through samples on the flat parts shoot
   // far off, so the bracket safeguards must do the work.
