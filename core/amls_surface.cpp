@@ -68,18 +68,18 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     std::vector<std::uint32_t> candidates;
     IVec<D> candidates_cell = IVec<D>::Zero();
     bool have_candidates = false;
-    // Fits are solved kLanes at a time, after their sums: a solve is a long
-    // chain of dependent square roots and divisions, and the next fits'
-    // independent chains fill its waits (as in FlowDeformation). The same
-    // operations per point, so the same bits.
-    constexpr std::size_t kLanes = 4;
+    // Fits are solved kLanes at a time, after their sums, side by side in
+    // SSE2 lanes (PrattFit::solve_lanes); each point gets what it would get alone.
+    constexpr std::size_t kLanes = 2 * PrattFit<D>::kPairs;
     std::array<PrattFit<D>, kLanes> fits;
     std::size_t batch_begin = begin;
     auto solve_batch = [&](std::size_t batch_end) {
-      for (std::size_t j = batch_begin; j < batch_end; ++j) {
-        pseudo_normals_[j] = points_.normals[j];
-        status[j] = fits[j - batch_begin].solve(points_.normals[j], pseudo_normals_[j]);
-      }
+      const std::size_t count = batch_end - batch_begin;
+      // A failed fit leaves the carried normal.
+      for (std::size_t j = batch_begin; j < batch_end; ++j) pseudo_normals_[j] = points_.normals[j];
+      PrattFit<D>::template solve_lanes<PrattFit<D>::kPairs>(
+          std::span(fits).first(count), std::span(points_.normals).subspan(batch_begin, count),
+          std::span(pseudo_normals_).subspan(batch_begin, count), std::span(status).subspan(batch_begin, count));
       batch_begin = batch_end;
     };
     for (std::size_t i = begin; i < end; ++i) {

@@ -8,7 +8,9 @@
 // scaled by Delta, so A is well conditioned and the normal is b / |b|.
 #include <Eigen/Core>
 #include <array>
+#include <span>
 
+#include "core/lane_pair.hpp"
 #include "core/vec.hpp"
 
 namespace amls {
@@ -26,6 +28,8 @@ template <int D>
 class PrattFit {
  public:
   static constexpr int kBasis = D + 2;
+  // How many pairs of fits solve_lanes() takes at once, besides one pair.
+  static constexpr int kPairs = 2;
   using Coeffs = Eigen::Matrix<double, kBasis, 1>;
   using Matrix = Eigen::Matrix<double, kBasis, kBasis>;
 
@@ -36,7 +40,7 @@ class PrattFit {
     q[0] = 1.0;
     q.template segment<D>(1) = u;
     q[D + 1] = u.squaredNorm();
-    // Only the lower triangle, packed column by column: the Cholesky
+    // Only the lower triangle, packed column by column: the LDL^T
     // factorization reads no more, and a() unpacks it. Packed, consecutive
     // entries pair up for SSE2 (in 2D the ten are five pairs) and the fit
     // holds no padding for the loop to zero.
@@ -52,13 +56,30 @@ class PrattFit {
   // `carried`, to `normal`. On failure `normal` is left untouched.
   FitStatus solve(const Vec<D>& carried, Vec<D>& normal);
 
-  // The fitted coefficients (a0, b, a2) of the last successful solve, scaled
-  // so that alpha^T C alpha = 1.
-  const Coeffs& coefficients() const { return alpha_; }
+  // solve() for up to 2 Pairs fits at once: fits[k] with carried[k] writes
+  // normals[k] and status[k]. Their inverse iterations run side by side (see
+  // LaneLdlt), each fit stopping at its own convergence, so every fit gets
+  // exactly what solve() gives it alone.
+  template <int Pairs>
+  static void solve_lanes(std::span<PrattFit> fits, std::span<const Vec<D>> carried, std::span<Vec<D>> normals,
+                          std::span<FitStatus> status);
+
+  // The fitted coefficients (a0, b, a2) of the last solve that found the
+  // eigenvector, scaled so that alpha^T C alpha = 1.
+  Coeffs coefficients() const;
 
  private:
-  bool solve_by_inverse_iteration(const Matrix& a, const Coeffs& start);
-  bool solve_by_eigen_decomposition(const Matrix& a);
+  // Whether the neighbourhood can determine a fit at all.
+  FitStatus check() const;
+  // From each pending lane's eigenvector x (any scale, x^T C x > 0): keeps
+  // x in its fit and writes the normal and status.
+  template <int Pairs>
+  static void finish_lanes(const LaneVector<kBasis, Pairs>& x, const LaneVector<D, Pairs>& carried,
+                           std::span<PrattFit> fits, const std::array<bool, Pairs * kLanesPerPair>& pending,
+                           std::span<Vec<D>> normals, std::span<FitStatus> status);
+  // The dense eigensolver, for the fits inverse iteration does not settle.
+  // Writes the admissible eigenvector if there is one.
+  bool solve_by_eigen_decomposition(Coeffs& eigenvector) const;
 
   // A, whole and symmetric.
   Matrix a() const;
@@ -68,6 +89,7 @@ class PrattFit {
   // degeneracy test reads.
   std::array<double, kBasis*(kBasis + 1) / 2> lower_{};
   int count_ = 0;
+  // The eigenvector of the last solve that found one, unscaled.
   Coeffs alpha_ = Coeffs::Zero();
 };
 
