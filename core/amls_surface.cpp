@@ -171,22 +171,18 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
   out.offsets.resize(corrected ? ids.size() : 0);
   const double r2 = radius * radius;
   std::size_t kept = 0;
-  // The kept normals' sum for the consistency test, in the same pass (a
-  // neighbour not kept adds zero, which leaves the sum's bits as they are).
-  Vec<D> sum = Vec<D>::Zero();
   for (const std::uint32_t id : ids) {
     const Vec<D>& q = points_.positions[id];
-    const Vec<D>& normal = pseudo_normals_[id];
     out.positions[kept] = q;
-    out.normals[kept] = normal;
+    out.normals[kept] = pseudo_normals_[id];
     if (corrected) out.offsets[kept] = offsets_[id];
-    const bool within = !((q - x).squaredNorm() > r2);
-    sum += static_cast<double>(within) * normal;
-    kept += within ? 1 : 0;
+    kept += (q - x).squaredNorm() > r2 ? 0 : 1;
   }
   out.positions.resize(kept);
   out.normals.resize(kept);
   out.offsets.resize(corrected ? kept : 0);
+  Vec<D> sum = Vec<D>::Zero();
+  for (const Vec<D>& n : out.normals) sum += n;
   // Every normal within 45 degrees of the sum s: n.s > |s| cos 45 degrees,
   // squared so that no square root holds up the test.
   const double half_sum2 = 0.5 * sum.squaredNorm();
