@@ -253,6 +253,14 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
 }
 
 template <int D>
+std::vector<double>& Resampler<D>::slot_distances() {
+  // All kFar between uses (each use resets the entries it set), so that a use
+  // touches only its crossings' vertices, not every slot.
+  slot_distances_.resize(std::max(slot_distances_.size(), field_.slots()), kFar);
+  return slot_distances_;
+}
+
+template <int D>
 void Resampler<D>::drop_certain_losers(double uncertainty) {
   // A crossing at estimated t lies within `uncertainty` of t (assumed), so its
   // distance to an edge end is known to that much, and so is which end is
@@ -264,30 +272,28 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   // keep_closest_crossings() on the crossings left chooses as it would on all
   // of them.
   const double eps = uncertainty;
-  constexpr double kNoBound = std::numeric_limits<double>::infinity();
-  // All kNoBound between calls (entries are reset below), so that only the
-  // crossings' vertices are touched, not every slot.
-  best_bound_.resize(std::max(best_bound_.size(), field_.slots()), kNoBound);
+  constexpr double kNoBound = kFar;
+  std::vector<double>& best_bound = slot_distances();
   // Whether a crossing is nearer to one end or the other is a coin toss, so
   // both loops select rather than branch.
   for (const Crossing& x : crossings_) {
     const bool upper_half = x.t >= 0.5;
     const bool certain = upper_half ? x.t - eps >= 0.5 : x.t + eps < 0.5;
     const double bound = certain ? (upper_half ? 1.0 - x.t : x.t) + eps : kNoBound;
-    double& best = best_bound_[upper_half ? x.to : x.from];
+    double& best = best_bound[upper_half ? x.to : x.from];
     best = std::min(best, bound);
   }
   std::size_t left = 0;
   for (const Crossing& x : crossings_) {
-    const bool at_from = (x.t - eps < 0.5) & (x.t - eps <= best_bound_[x.from]);
-    const bool at_to = (x.t + eps >= 0.5) & (1.0 - x.t - eps <= best_bound_[x.to]);
+    const bool at_from = (x.t - eps < 0.5) & (x.t - eps <= best_bound[x.from]);
+    const bool at_to = (x.t + eps >= 0.5) & (1.0 - x.t - eps <= best_bound[x.to]);
     crossings_[left] = x;
     left += static_cast<std::size_t>(at_from | at_to);
   }
   crossings_.resize(left);
   // Each bound set above is that of a crossing kept (it may win where its own
   // bound is), so resetting the kept crossings' ends resets them all.
-  for (const Crossing& x : crossings_) best_bound_[x.from] = best_bound_[x.to] = kNoBound;
+  for (const Crossing& x : crossings_) best_bound[x.from] = best_bound[x.to] = kNoBound;
   stats_.located = left;
 }
 
@@ -300,25 +306,23 @@ void Resampler<D>::keep_closest_crossings() {
   // between its neighbours instead of at one end of a gap: right after a
   // resample 2D spacings stay within [0.59 h, 1.40 h] on the clover scene (the
   // walk-order rule reached 1.61 h) and the 256^2 vortex error drops by a fifth.
-  constexpr double kFar = std::numeric_limits<double>::infinity();
-  // All kFar between calls (entries are reset below): only the crossings' vertices are touched.
-  closest_distance_.resize(std::max(closest_distance_.size(), field_.slots()), kFar);
-  closest_crossing_.resize(closest_distance_.size());
+  std::vector<double>& closest_distance = slot_distances();
+  closest_crossing_.resize(closest_distance.size());
   auto nearer_end = [](const Crossing& x) { return x.t < 0.5 ? x.from : x.to; };
   // Selects, not branches: which crossing is nearer is unpredictable.
   for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
     const Crossing& x = crossings_[k];
     const std::uint32_t end = nearer_end(x);
     const double distance = std::min(x.t, 1.0 - x.t);
-    const bool nearer = distance < closest_distance_[end];  // strictly: ties keep the first listed
-    closest_distance_[end] = nearer ? distance : closest_distance_[end];
+    const bool nearer = distance < closest_distance[end];  // strictly: ties keep the first listed
+    closest_distance[end] = nearer ? distance : closest_distance[end];
     closest_crossing_[end] = nearer ? k : closest_crossing_[end];
   }
   std::size_t kept = 0;
   for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
     const std::uint32_t end = nearer_end(crossings_[k]);
     const bool closest = closest_crossing_[end] == k;
-    closest_distance_[end] = kFar;  // read no more in this call: every entry set above is reset here
+    closest_distance[end] = kFar;  // read no more in this call: every entry set above is reset here
     crossings_[kept] = crossings_[k];
     kept += static_cast<std::size_t>(closest);
   }
