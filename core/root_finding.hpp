@@ -15,7 +15,7 @@
 //    over the initial bracket allows on the shrunken bracket, and the search
 //    stops there instead of bisecting down to the tolerance.
 // Measured on the 512^2 vortex with the resampler's tolerances
-// (core/segment_root.hpp): 1.1 evaluations per located grid-edge crossing,
+// (core/segment_root.hpp): 1.06 evaluations per located grid-edge crossing,
 // where Illinois regula falsi from the linear interpolant's zero took 4.1.
 #include <algorithm>
 #include <cmath>
