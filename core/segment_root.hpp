@@ -30,9 +30,10 @@ inline constexpr double kSegmentRootTolerance = 1e-12;
 inline constexpr double kSegmentRootStep = 1e-5;
 // An evaluation this close to the root (in units of the segment) gives the new
 // point's normal; the fitted gradient changes by about as little over it.
-// (Beyond kSegmentRootStep, or the end of an unevaluated step would take the
-// ends' interpolated normals, which in 3D are rough.)
+// It must reach beyond kSegmentRootStep: otherwise the end of an unevaluated
+// step would get the ends' interpolated normals, which in 3D are rough.
 inline constexpr double kNormalReach = 1e-4;
+static_assert(kNormalReach > kSegmentRootStep);
 
 template <int D>
 struct SegmentRoot {
