@@ -68,22 +68,14 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     std::vector<std::uint32_t> candidates;
     IVec<D> candidates_cell = IVec<D>::Zero();
     bool have_candidates = false;
-    // Fits are solved kLanes at a time, after their sums, side by side in
-    // SSE2 lanes (PrattFit::solve_lanes); each point gets what it would get alone.
-    constexpr std::size_t kLanes = 2 * PrattFit<D>::kPairs;
-    std::array<PrattFit<D>, kLanes> fits;
-    std::size_t batch_begin = begin;
-    auto solve_batch = [&](std::size_t batch_end) {
-      const std::size_t count = batch_end - batch_begin;
-      // A failed fit leaves the carried normal.
-      for (std::size_t j = batch_begin; j < batch_end; ++j) pseudo_normals_[j] = points_.normals[j];
-      PrattFit<D>::template solve_lanes<PrattFit<D>::kPairs>(
-          std::span(fits).first(count), std::span(points_.normals).subspan(batch_begin, count),
-          std::span(pseudo_normals_).subspan(batch_begin, count), std::span(status).subspan(batch_begin, count));
-      batch_begin = batch_end;
-    };
+    // Fits are solved a batch at a time, after their sums, side by side in
+    // SSE2 lanes (PrattFit::solve_lanes); each point gets what it would get
+    // alone. A failed fit leaves the carried normal.
+    std::copy(points_.normals.begin() + static_cast<std::ptrdiff_t>(begin),
+              points_.normals.begin() + static_cast<std::ptrdiff_t>(end),
+              pseudo_normals_.begin() + static_cast<std::ptrdiff_t>(begin));
+    PrattBatches<D> fits(points_.normals, pseudo_normals_, status, begin);
     for (std::size_t i = begin; i < end; ++i) {
-      if (i - batch_begin == kLanes) solve_batch(i);
       const Vec<D>& p = points_.positions[i];
       const IVec<D> cell = index_.cell_of(p);
       if (!have_candidates || cell != candidates_cell) {
@@ -94,7 +86,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
         candidates_cell = cell;
       }
       const Vec<D>& own = points_.normals[i];
-      PrattFit<D>& fit = fits[i - batch_begin] = PrattFit<D>();
+      PrattFit<D>& fit = fits.start(i);
       std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.start(i, block) : nullptr;
       for (const std::uint32_t id : candidates) {
         const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
@@ -106,7 +98,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
       }
       if (listed) neighbours_.finish(i, block);
     }
-    solve_batch(end);
+    fits.finish(end);
   });
   NormalStats stats;
   for (FitStatus s : status) stats.count(s);
@@ -309,8 +301,8 @@ void AmlsSurface<D>::evaluate_cube_with(const Neighbourhood<D>& neighbourhood,
 }
 
 template <int D>
-FitStatus AmlsSurface<D>::pseudo_normal_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p,
-                                          const Vec<D>& carried, Vec<D>& normal) const {
+PrattFit<D> AmlsSurface<D>::pratt_fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p,
+                                        const Vec<D>& carried) const {
   const double inverse_radius = 1.0 / radius_;
   const bool filter = parameters_.orientation_filter;
   PrattFit<D> fit;
@@ -319,7 +311,7 @@ FitStatus AmlsSurface<D>::pseudo_normal_in(const Neighbourhood<D>& neighbourhood
     const Vec<D> u = (neighbourhood.positions[k] - p) * inverse_radius;
     fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
   }
-  return fit.solve(carried, normal);
+  return fit;
 }
 
 template class AmlsSurface<2>;

@@ -114,13 +114,12 @@ class AmlsSurface {
   static constexpr int kCubeCorners = 1 << D;
   void evaluate_cube(const Neighbourhood<D>& neighbourhood, const std::array<Vec<D>, kCubeCorners>& corners,
                      std::array<Evaluation<D>, kCubeCorners>& out) const;
-  // Step 1 at p, which carries the normal `carried`, from a neighbourhood holding
-  // the positions and carried normals of every point within Delta of p: the fit
-  // and orientation filter of update_normals(), for callers with their own
-  // neighbour index (the ray-tracing baseline's k-d tree). On success writes the
-  // pseudo-normal to `normal`; on failure leaves it untouched.
-  FitStatus pseudo_normal_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p, const Vec<D>& carried,
-                             Vec<D>& normal) const;
+  // Step 1's fit at p, which carries the normal `carried`, from a
+  // neighbourhood holding the positions and carried normals of every point
+  // within Delta of p: the sums and orientation filter of update_normals(),
+  // for callers with their own neighbour index (the ray-tracing baseline's
+  // k-d tree), who solve it (PrattBatches).
+  PrattFit<D> pratt_fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p, const Vec<D>& carried) const;
 
  private:
   void require_ready() const;

@@ -93,6 +93,41 @@ class PrattFit {
   Coeffs alpha_ = Coeffs::Zero();
 };
 
+// The fits of consecutive points [begin, end), solved kLanes at a time with
+// solve_lanes(): start(i) hands out point i's fit to fill, solving the batch
+// before it once that is full, and finish() solves the last. Point i's result
+// goes to normals[i] (left as it is where the fit fails) and status[i].
+template <int D>
+class PrattBatches {
+ public:
+  static constexpr std::size_t kLanes = 2 * PrattFit<D>::kPairs;
+
+  PrattBatches(std::span<const Vec<D>> carried, std::span<Vec<D>> normals, std::span<FitStatus> status,
+               std::size_t begin)
+      : carried_(carried), normals_(normals), status_(status), batch_begin_(begin) {}
+
+  PrattFit<D>& start(std::size_t i) {
+    if (i - batch_begin_ == kLanes) solve_until(i);
+    return fits_[i - batch_begin_] = PrattFit<D>();
+  }
+  void finish(std::size_t end) { solve_until(end); }
+
+ private:
+  void solve_until(std::size_t end) {
+    const std::size_t count = end - batch_begin_;
+    PrattFit<D>::template solve_lanes<PrattFit<D>::kPairs>(
+        std::span(fits_).first(count), carried_.subspan(batch_begin_, count), normals_.subspan(batch_begin_, count),
+        status_.subspan(batch_begin_, count));
+    batch_begin_ = end;
+  }
+
+  std::span<const Vec<D>> carried_;
+  std::span<Vec<D>> normals_;
+  std::span<FitStatus> status_;
+  std::array<PrattFit<D>, kLanes> fits_;
+  std::size_t batch_begin_;
+};
+
 extern template class PrattFit<2>;
 extern template class PrattFit<3>;
 

@@ -1,5 +1,6 @@
 #include "core/ray_tracing_surface.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -61,6 +62,11 @@ NormalStats RayTracingSurface<D>::update_normals() {
   pool_.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
     std::vector<std::uint32_t>& near = normal_scratch_[static_cast<std::size_t>(block)].near;
     Neighbourhood<D>& neighbourhood = normal_scratch_[static_cast<std::size_t>(block)].neighbourhood;
+    // Solved a batch at a time, as DeformingSurface's (AmlsSurface::update_normals()).
+    std::copy(points_.normals.begin() + static_cast<std::ptrdiff_t>(begin),
+              points_.normals.begin() + static_cast<std::ptrdiff_t>(end),
+              pseudo_normals_.begin() + static_cast<std::ptrdiff_t>(begin));
+    PrattBatches<D> fits(points_.normals, pseudo_normals_, status_, begin);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points_.positions[i];
       near.clear();
@@ -71,9 +77,9 @@ NormalStats RayTracingSurface<D>::update_normals() {
         neighbourhood.positions.push_back(points_.positions[id]);
         neighbourhood.normals.push_back(points_.normals[id]);
       }
-      pseudo_normals_[i] = points_.normals[i];
-      status_[i] = definition_.pseudo_normal_in(neighbourhood, p, points_.normals[i], pseudo_normals_[i]);
+      fits.start(i) = definition_.pratt_fit_in(neighbourhood, p, points_.normals[i]);
     }
+    fits.finish(end);
   });
   NormalStats stats;
   for (const FitStatus s : status_) stats.count(s);

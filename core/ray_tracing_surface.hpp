@@ -5,7 +5,7 @@
 // neighbours), Intersections (RayResampler), Remove (clusters), Deform, Rebuild
 // Tree. It shares the AMLS definition with DeformingSurface (the same Pratt fit,
 // F, minimum weight and orientation filter, through AmlsSurface's
-// pseudo_normal_in() and evaluate_in()); only the neighbour index (k-d tree
+// pratt_fit_in() and evaluate_in()); only the neighbour index (k-d tree
 // against grid hash) and the resampling (rays against the grid walk) differ.
 #include "core/amls_surface.hpp"
 #include "core/deformation.hpp"
