@@ -331,9 +331,12 @@ def start_xvfb(log_path):
         number = rng.randint(200, 30000)
         read_end, write_end = os.pipe()
         with open(log_path, "a") as log:
+            # -noreset: an X server resets when its last client leaves (here the
+            # probe below), and refuses connections while it does; the editor
+            # starting right then failed with "Failed to open display".
             server = subprocess.Popen(["Xvfb", ":%d" % number, "-displayfd", str(write_end), "-screen", "0",
-                                       "1280x800x24", "-nolisten", "tcp"], pass_fds=(write_end,), stdout=log,
-                                      stderr=subprocess.STDOUT)
+                                       "1280x800x24", "-nolisten", "tcp", "-noreset"], pass_fds=(write_end,),
+                                      stdout=log, stderr=subprocess.STDOUT)
         os.close(write_end)
         answer = b""
         deadline = time.monotonic() + TIMEOUT
