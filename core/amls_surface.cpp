@@ -71,9 +71,6 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     // Fits are solved a batch at a time, after their sums, side by side in
     // SSE2 lanes (PrattFit::solve_lanes); each point gets what it would get
     // alone. A failed fit leaves the carried normal.
-    std::copy(points_.normals.begin() + static_cast<std::ptrdiff_t>(begin),
-              points_.normals.begin() + static_cast<std::ptrdiff_t>(end),
-              pseudo_normals_.begin() + static_cast<std::ptrdiff_t>(begin));
     PrattBatches<D> fits(points_.normals, pseudo_normals_, status, begin);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points_.positions[i];

@@ -7,6 +7,7 @@
 // with the smallest non-negative lambda. Coordinates are centred at the point and
 // scaled by Delta, so A is well conditioned and the normal is b / |b|.
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <span>
 
@@ -95,8 +96,9 @@ class PrattFit {
 
 // The fits of consecutive points [begin, end), solved kLanes at a time with
 // solve_lanes(): start(i) hands out point i's fit to fill, solving the batch
-// before it once that is full, and finish() solves the last. Point i's result
-// goes to normals[i] (left as it is where the fit fails) and status[i].
+// before it once that is full, and finish() solves the last. Point i's
+// normal goes to normals[i], carried[i] where the fit fails, and its status
+// to status[i].
 template <int D>
 class PrattBatches {
  public:
@@ -115,9 +117,11 @@ class PrattBatches {
  private:
   void solve_until(std::size_t end) {
     const std::size_t count = end - batch_begin_;
+    const std::span<Vec<D>> normals = normals_.subspan(batch_begin_, count);
+    const std::span<const Vec<D>> carried = carried_.subspan(batch_begin_, count);
+    std::copy(carried.begin(), carried.end(), normals.begin());  // kept where a fit fails
     PrattFit<D>::template solve_lanes<PrattFit<D>::kPairs>(
-        std::span(fits_).first(count), carried_.subspan(batch_begin_, count), normals_.subspan(batch_begin_, count),
-        status_.subspan(batch_begin_, count));
+        std::span(fits_).first(count), carried, normals, status_.subspan(batch_begin_, count));
     batch_begin_ = end;
   }
 

@@ -1,6 +1,5 @@
 #include "core/ray_tracing_surface.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -63,9 +62,6 @@ NormalStats RayTracingSurface<D>::update_normals() {
     std::vector<std::uint32_t>& near = normal_scratch_[static_cast<std::size_t>(block)].near;
     Neighbourhood<D>& neighbourhood = normal_scratch_[static_cast<std::size_t>(block)].neighbourhood;
     // Solved a batch at a time, as DeformingSurface's (AmlsSurface::update_normals()).
-    std::copy(points_.normals.begin() + static_cast<std::ptrdiff_t>(begin),
-              points_.normals.begin() + static_cast<std::ptrdiff_t>(end),
-              pseudo_normals_.begin() + static_cast<std::ptrdiff_t>(begin));
     PrattBatches<D> fits(points_.normals, pseudo_normals_, status_, begin);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points_.positions[i];

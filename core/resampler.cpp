@@ -272,14 +272,13 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   // keep_closest_crossings() on the crossings left chooses as it would on all
   // of them.
   const double eps = uncertainty;
-  constexpr double kNoBound = kFar;
   std::vector<double>& best_bound = slot_distances();
   // Whether a crossing is nearer to one end or the other is a coin toss, so
   // both loops select rather than branch.
   for (const Crossing& x : crossings_) {
     const bool upper_half = x.t >= 0.5;
     const bool certain = upper_half ? x.t - eps >= 0.5 : x.t + eps < 0.5;
-    const double bound = certain ? (upper_half ? 1.0 - x.t : x.t) + eps : kNoBound;
+    const double bound = certain ? (upper_half ? 1.0 - x.t : x.t) + eps : kFar;
     double& best = best_bound[upper_half ? x.to : x.from];
     best = std::min(best, bound);
   }
@@ -293,7 +292,7 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   crossings_.resize(left);
   // Each bound set above is that of a crossing kept (it may win where its own
   // bound is), so resetting the kept crossings' ends resets them all.
-  for (const Crossing& x : crossings_) best_bound[x.from] = best_bound[x.to] = kNoBound;
+  for (const Crossing& x : crossings_) best_bound[x.from] = best_bound[x.to] = kFar;
   stats_.located = left;
 }
 
