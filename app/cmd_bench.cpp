@@ -9,7 +9,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/flow_report.hpp"
-#include "core/bench_suite.hpp"
+#include "core/run/bench_suite.hpp"
 
 namespace amls::app {
 

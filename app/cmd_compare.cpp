@@ -8,7 +8,7 @@
 #include "app/common_options.hpp"
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
-#include "core/flow_test.hpp"
+#include "core/run/flow_test.hpp"
 
 namespace amls::app {
 

@@ -11,8 +11,8 @@
 #include "app/deform_report.hpp"
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
-#include "core/point_set_io.hpp"
-#include "core/staged_directory.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/util/staged_directory.hpp"
 
 namespace amls::app {
 

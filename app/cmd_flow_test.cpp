@@ -6,8 +6,8 @@
 #include "app/common_options.hpp"
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
-#include "core/flow_test.hpp"
-#include "core/point_set_io.hpp"
+#include "core/run/flow_test.hpp"
+#include "core/io/point_set_io.hpp"
 
 namespace amls::app {
 

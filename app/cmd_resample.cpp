@@ -5,9 +5,9 @@
 
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
-#include "core/point_set_io.hpp"
-#include "core/point_set_resampling.hpp"
-#include "core/surface_samples.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/point_set_resampling.hpp"
+#include "core/io/surface_samples.hpp"
 
 namespace amls::app {
 

@@ -3,7 +3,7 @@
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 
-#include "core/scene_run.hpp"
+#include "core/run/scene_run.hpp"
 
 namespace amls::app {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/flow_test.hpp"
+#include "core/run/flow_test.hpp"
 
 namespace amls::app {
 

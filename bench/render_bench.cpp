@@ -9,7 +9,7 @@
 #include <exception>
 #include <numbers>
 
-#include "core/shapes.hpp"
+#include "core/geometry/shapes.hpp"
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/splat_renderer.hpp"

@@ -8,13 +8,13 @@
 #include <stdexcept>
 #include <variant>
 
-#include "core/curve_tracing.hpp"
-#include "core/mesh_io.hpp"
-#include "core/metrics.hpp"
-#include "core/point_set_io.hpp"
-#include "core/point_set_resampling.hpp"
-#include "core/scene_state.hpp"
-#include "core/surface_samples.hpp"
+#include "core/surface/curve_tracing.hpp"
+#include "core/io/mesh_io.hpp"
+#include "core/surface/metrics.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/point_set_resampling.hpp"
+#include "core/run/scene_state.hpp"
+#include "core/io/surface_samples.hpp"
 #include "render/point_data.hpp"
 
 namespace amls {

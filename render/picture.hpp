@@ -3,7 +3,7 @@
 // content, and the view it is seen from.
 //
 // Inputs, told apart by their extension and header:
-// - a scene (.json, docs/scene-format.md): its state after K steps (core/scene_state.hpp),
+// - a scene (.json, docs/scene-format.md): its state after K steps (core/run/scene_state.hpp),
 //   drawn with its handles; h is the scene's grid spacing;
 // - a triangle mesh (.obj, or .ply with faces): sampled at h with face normals;
 // - a point set (.ply, .xyz, 2D or 3D): as read, with normals estimated (Pratt fit
@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "core/point_set.hpp"
-#include "core/scene_run.hpp"
+#include "core/geometry/point_set.hpp"
+#include "core/run/scene_run.hpp"
 #include "render/headless.hpp"
 #include "render/splat_renderer.hpp"
 

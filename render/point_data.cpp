@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/point_index.hpp"
+#include "core/geometry/point_index.hpp"
 
 namespace amls {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/point_set.hpp"
+#include "core/geometry/point_set.hpp"
 #include "render/camera.hpp"
 
 namespace amls {

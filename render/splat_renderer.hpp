@@ -16,7 +16,7 @@
 #include <span>
 #include <vector>
 
-#include "core/point_set.hpp"
+#include "core/geometry/point_set.hpp"
 #include "render/camera.hpp"
 #include "render/render_options.hpp"
 

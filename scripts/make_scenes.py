@@ -5,7 +5,7 @@ The handles are designed here, in a few lines each, so that the scenes can be
 changed and remade: python3 scripts/make_scenes.py. Where a new stage adds a
 handle on the already deformed shape, its start is found by carrying the
 initial point through the previous stages with the same 2D rigid MLS map as
-core/mls_deformation.cpp (Schaefer et al. 2006, alpha = 1).
+core/deform/mls_deformation.cpp (Schaefer et al. 2006, alpha = 1).
 """
 import json
 import math

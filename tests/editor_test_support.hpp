@@ -5,8 +5,8 @@
 #include <variant>
 
 #include "app/editor/session_recording.hpp"
-#include "core/scene.hpp"
-#include "core/scene_run.hpp"
+#include "core/run/scene.hpp"
+#include "core/run/scene_run.hpp"
 #include "temp_dir.hpp"
 
 namespace amls::test {

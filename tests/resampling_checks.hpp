@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/metrics.hpp"
-#include "core/shapes.hpp"
+#include "core/surface/metrics.hpp"
+#include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
 
 namespace amls::test {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/scene.hpp"
+#include "core/run/scene.hpp"
 
 namespace amls::test {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/amls_surface.hpp"
+#include "core/surface/amls_surface.hpp"
 
 namespace amls::test {
 

@@ -3,7 +3,7 @@
 #include <array>
 #include <vector>
 
-#include "core/shapes.hpp"
+#include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
 
 using namespace amls;

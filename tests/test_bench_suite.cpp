@@ -1,7 +1,7 @@
 #include <doctest/doctest.h>
 
-#include "core/bench_suite.hpp"
-#include "core/process_memory.hpp"
+#include "core/run/bench_suite.hpp"
+#include "core/util/process_memory.hpp"
 
 using namespace amls;
 

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <utility>
 
-#include "core/curve_tracing.hpp"
-#include "core/shapes.hpp"
+#include "core/surface/curve_tracing.hpp"
+#include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
 
 using namespace amls;

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "core/deformation_history.hpp"
+#include "core/deform/deformation_history.hpp"
 
 using namespace amls;
 

@@ -9,7 +9,7 @@
 
 #include "app/editor/editor_worker.hpp"
 #include "app/editor/scene_start.hpp"
-#include "core/point_set_io.hpp"
+#include "core/io/point_set_io.hpp"
 #include "editor_test_support.hpp"
 
 using namespace amls;

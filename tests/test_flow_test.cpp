@@ -1,9 +1,9 @@
 #include <doctest/doctest.h>
 
-#include "core/flow_deformation.hpp"
-#include "core/flow_test.hpp"
-#include "core/ray_tracing_surface.hpp"
-#include "core/shapes.hpp"
+#include "core/deform/flow_deformation.hpp"
+#include "core/run/flow_test.hpp"
+#include "core/run/ray_tracing_surface.hpp"
+#include "core/geometry/shapes.hpp"
 
 using namespace amls;
 

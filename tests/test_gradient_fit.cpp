@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "core/gradient_fit.hpp"
-#include "core/weight.hpp"
+#include "core/surface/gradient_fit.hpp"
+#include "core/math/weight.hpp"
 
 using namespace amls;
 

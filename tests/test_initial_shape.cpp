@@ -4,9 +4,9 @@
 
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
-#include "core/point_set_io.hpp"
-#include "core/scene_run.hpp"
-#include "core/shapes.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/scene_run.hpp"
+#include "core/geometry/shapes.hpp"
 #include "editor_test_support.hpp"
 
 using namespace amls;

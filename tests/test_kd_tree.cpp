@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <random>
 
-#include "core/kd_tree.hpp"
+#include "core/geometry/kd_tree.hpp"
 
 using namespace amls;
 

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "core/mesh_io.hpp"
+#include "core/io/mesh_io.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;

@@ -1,7 +1,7 @@
 #include <doctest/doctest.h>
 
-#include "core/mesh_sampling.hpp"
-#include "core/metrics.hpp"
+#include "core/io/mesh_sampling.hpp"
+#include "core/surface/metrics.hpp"
 
 using namespace amls;
 

@@ -1,7 +1,7 @@
 #include <doctest/doctest.h>
 
-#include "core/metrics.hpp"
-#include "core/shapes.hpp"
+#include "core/surface/metrics.hpp"
+#include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
 
 using namespace amls;

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/mls_deformation.hpp"
-#include "core/shapes.hpp"
+#include "core/deform/mls_deformation.hpp"
+#include "core/geometry/shapes.hpp"
 
 using namespace amls;
 

@@ -2,8 +2,8 @@
 
 #include <random>
 
-#include "core/normal_estimation.hpp"
-#include "core/shapes.hpp"
+#include "core/surface/normal_estimation.hpp"
+#include "core/geometry/shapes.hpp"
 
 using namespace amls;
 

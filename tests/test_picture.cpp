@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/point_set_io.hpp"
-#include "core/scene.hpp"
-#include "core/shapes.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/scene.hpp"
+#include "core/geometry/shapes.hpp"
 #include "render/headless.hpp"
 #include "render/picture.hpp"
 #include "scene_fixtures.hpp"

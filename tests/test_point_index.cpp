@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <random>
 
-#include "core/point_index.hpp"
+#include "core/geometry/point_index.hpp"
 
 using namespace amls;
 

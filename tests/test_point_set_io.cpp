@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/point_set_io.hpp"
+#include "core/io/point_set_io.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/point_set_resampling.hpp"
-#include "core/shapes.hpp"
+#include "core/run/point_set_resampling.hpp"
+#include "core/geometry/shapes.hpp"
 
 using namespace amls;
 

@@ -3,8 +3,8 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "core/pratt_fit.hpp"
-#include "core/weight.hpp"
+#include "core/surface/pratt_fit.hpp"
+#include "core/math/weight.hpp"
 
 using namespace amls;
 

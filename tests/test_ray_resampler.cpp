@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include "core/flow_deformation.hpp"
-#include "core/ray_resampler.hpp"
-#include "core/ray_tracing_surface.hpp"
-#include "core/shapes.hpp"
+#include "core/deform/flow_deformation.hpp"
+#include "core/resample/ray_resampler.hpp"
+#include "core/run/ray_tracing_surface.hpp"
+#include "core/geometry/shapes.hpp"
 #include "resampling_checks.hpp"
 #include "surface_fixtures.hpp"
 

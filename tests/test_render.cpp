@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/deforming_surface.hpp"
-#include "core/shapes.hpp"
+#include "core/run/deforming_surface.hpp"
+#include "core/geometry/shapes.hpp"
 #include "render/headless.hpp"
 #include "render/image.hpp"
 #include "render/offscreen_context.hpp"

@@ -4,9 +4,9 @@
 #include <limits>
 #include <numbers>
 
-#include "core/flow_test.hpp"
-#include "core/resample_policy.hpp"
-#include "core/shapes.hpp"
+#include "core/run/flow_test.hpp"
+#include "core/resample/resample_policy.hpp"
+#include "core/geometry/shapes.hpp"
 
 using namespace amls;
 

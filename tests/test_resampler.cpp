@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/resampler.hpp"
-#include "core/segment_root.hpp"
-#include "core/shapes.hpp"
+#include "core/resample/resampler.hpp"
+#include "core/resample/segment_root.hpp"
+#include "core/geometry/shapes.hpp"
 #include "resampling_checks.hpp"
 #include "surface_fixtures.hpp"
 

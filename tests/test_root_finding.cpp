@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "core/root_finding.hpp"
-#include "core/segment_root.hpp"
+#include "core/math/root_finding.hpp"
+#include "core/resample/segment_root.hpp"
 
 using namespace amls;
 

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/scene.hpp"
-#include "core/scene_run.hpp"
+#include "core/run/scene.hpp"
+#include "core/run/scene_run.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;

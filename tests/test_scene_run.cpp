@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/scene_run.hpp"
+#include "core/run/scene_run.hpp"
 
 using namespace amls;
 

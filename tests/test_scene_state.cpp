@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/scene_state.hpp"
+#include "core/run/scene_state.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace amls;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/metrics.hpp"
-#include "core/shapes.hpp"
+#include "core/surface/metrics.hpp"
+#include "core/geometry/shapes.hpp"
 
 using namespace amls;
 

@@ -2,7 +2,7 @@
 
 #include <Eigen/Core>
 
-#include "core/small_cholesky.hpp"
+#include "core/math/small_cholesky.hpp"
 
 using namespace amls;
 

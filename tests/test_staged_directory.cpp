@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "core/staged_directory.hpp"
+#include "core/util/staged_directory.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;

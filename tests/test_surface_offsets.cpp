@@ -1,11 +1,11 @@
-// The 3D bias correction (core/surface_offsets.hpp).
+// The 3D bias correction (core/surface/surface_offsets.hpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "core/shapes.hpp"
+#include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
 
 using namespace amls;

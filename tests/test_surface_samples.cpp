@@ -1,8 +1,8 @@
 #include <doctest/doctest.h>
 
-#include "core/point_set_io.hpp"
-#include "core/shapes.hpp"
-#include "core/surface_samples.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/geometry/shapes.hpp"
+#include "core/io/surface_samples.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;

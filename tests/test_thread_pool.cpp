@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/thread_pool.hpp"
+#include "core/util/thread_pool.hpp"
 
 using namespace amls;
 

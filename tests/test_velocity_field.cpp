@@ -5,10 +5,10 @@
 #include <numbers>
 #include <random>
 
-#include "core/flow_deformation.hpp"
-#include "core/shapes.hpp"
-#include "core/sin_cos_pi.hpp"
-#include "core/velocity_field.hpp"
+#include "core/deform/flow_deformation.hpp"
+#include "core/geometry/shapes.hpp"
+#include "core/math/sin_cos_pi.hpp"
+#include "core/deform/velocity_field.hpp"
 
 #include <Eigen/Geometry>
 

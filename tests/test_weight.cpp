@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/weight.hpp"
+#include "core/math/weight.hpp"
 
 using namespace amls;
 

@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/mls_deformation.hpp"
-#include "core/point_set_io.hpp"
-#include "core/point_set_resampling.hpp"
+#include "core/deform/mls_deformation.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/point_set_resampling.hpp"
 
 namespace amls::editor {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "app/editor/session_recording.hpp"
-#include "core/deforming_surface.hpp"
+#include "core/run/deforming_surface.hpp"
 
 namespace amls::editor {
 

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <thread>
 
-#include "core/point_set_io.hpp"
+#include "core/io/point_set_io.hpp"
 #include "render/image.hpp"
 
 namespace amls::editor {

@@ -7,8 +7,8 @@
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/overloaded.hpp"
 #include "app/editor/sampling_quality.hpp"
-#include "core/point_set_io.hpp"
-#include "core/scene.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/scene.hpp"
 
 namespace amls::editor {
 

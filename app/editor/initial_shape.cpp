@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "app/editor/scene_start.hpp"
-#include "core/metrics.hpp"
-#include "core/point_set_io.hpp"
+#include "core/surface/metrics.hpp"
+#include "core/io/point_set_io.hpp"
 
 namespace amls::editor {
 

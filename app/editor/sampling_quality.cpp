@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/point_index.hpp"
+#include "core/geometry/point_index.hpp"
 
 namespace amls::editor {
 

@@ -4,7 +4,7 @@
 // larger values show where the points thin out and the surface may break).
 #include <vector>
 
-#include "core/metrics.hpp"
+#include "core/surface/metrics.hpp"
 
 namespace amls::editor {
 

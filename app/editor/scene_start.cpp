@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <utility>
 
-#include "core/point_set_io.hpp"
-#include "core/scene_run.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/scene_run.hpp"
 
 namespace amls::editor {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/editor/surface_settings.hpp"
-#include "core/scene.hpp"
+#include "core/run/scene.hpp"
 
 namespace amls::editor {
 

@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "app/editor/surface_settings.hpp"
-#include "core/deformation_history.hpp"
-#include "core/scene.hpp"
+#include "core/deform/deformation_history.hpp"
+#include "core/run/scene.hpp"
 
 namespace amls::editor {
 

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "app/editor/surface_settings.hpp"
-#include "core/curve_tracing.hpp"
-#include "core/deforming_surface.hpp"
-#include "core/metrics.hpp"
+#include "core/surface/curve_tracing.hpp"
+#include "core/run/deforming_surface.hpp"
+#include "core/surface/metrics.hpp"
 
 namespace amls::editor {
 

@@ -5,11 +5,11 @@
 #include <variant>
 #include <vector>
 
-#include "core/mls_deformation.hpp"
-#include "core/point_set.hpp"
-#include "core/resample_policy.hpp"
-#include "core/resampler.hpp"
-#include "core/scene.hpp"
+#include "core/deform/mls_deformation.hpp"
+#include "core/geometry/point_set.hpp"
+#include "core/resample/resample_policy.hpp"
+#include "core/resample/resampler.hpp"
+#include "core/run/scene.hpp"
 
 namespace amls::editor {
 
@@ -20,7 +20,7 @@ struct SurfaceSettings {
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;
   bool resample = true;  // resample as `policy` says (off: only deform, and watch S(P) break)
-  // Which steps resample, as `amls deform --resample` (core/resample_policy.hpp).
+  // Which steps resample, as `amls deform --resample` (core/resample/resample_policy.hpp).
   ResamplePolicy policy;
 
   bool operator==(const SurfaceSettings&) const = default;
@@ -31,7 +31,7 @@ struct SurfaceSettings {
 // Throws std::invalid_argument naming the first field out of range.
 void validate(const SurfaceSettings& settings);
 
-// The initial shape as a scene's `shape` object says it (core/scene.hpp), in
+// The initial shape as a scene's `shape` object says it (core/run/scene.hpp), in
 // the shape's dimension, so that Save Scene writes back what was read: a torus
 // stays a torus.
 using ShapeSource = std::variant<SceneShape<2>, SceneShape<3>>;

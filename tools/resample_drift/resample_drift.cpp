@@ -22,10 +22,10 @@
 #include <unordered_set>
 #include <vector>
 
-#include "core/deforming_surface.hpp"
-#include "core/flow_deformation.hpp"
-#include "core/shapes.hpp"
-#include "core/velocity_field.hpp"
+#include "core/run/deforming_surface.hpp"
+#include "core/deform/flow_deformation.hpp"
+#include "core/geometry/shapes.hpp"
+#include "core/deform/velocity_field.hpp"
 
 using namespace amls;
 
@@ -108,7 +108,7 @@ int enright(int grid_cells, int every) {
   const double h = grid.spacing(), radius = 0.15;
   const double v_exact = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
   DeformingSurface<3> loop(grid, AmlsParameters{}, Variant::exact, 2);
-  // As core/flow_test.cpp: the sphere sampled at spacing h / 2.
+  // As core/run/flow_test.cpp: the sphere sampled at spacing h / 2.
   const double area = 4.0 * std::numbers::pi * radius * radius;
   loop.set_points(sample_sphere(Vec<3>(0.35, 0.35, 0.35), radius,
                                 static_cast<std::size_t>(std::ceil(area / (0.25 * h * h)))));

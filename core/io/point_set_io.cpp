@@ -1,0 +1,259 @@
+#include "core/io/point_set_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+#include "core/io/raw_point_file.hpp"
+
+namespace amls {
+
+namespace {
+
+namespace fs = std::filesystem;
+using detail::fail;
+using detail::RawPointFile;
+
+// Normals this close to unit length are kept as they are, bit for bit, so that
+// a set written and read back is the same set; others are normalised.
+constexpr double kUnitTolerance = 1e-12;
+// Normals off by more than this were not meant to be unit (float storage is
+// off by about 1e-7): worth a warning.
+constexpr double kNormaliseWarning = 1e-4;
+
+std::string short_number(double value) {
+  std::string text;
+  detail::append_double(text, value);
+  return text;
+}
+
+// Zero normals, non-finite values, normalisation.
+void check_normals(RawPointFile& raw) {
+  const std::size_t n = raw.points.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!raw.points.positions[i].allFinite())
+      fail(raw.path, raw.where(i) + ": non-finite coordinate (" + short_number(raw.points.positions[i].x()) + " " +
+                         short_number(raw.points.positions[i].y()) + " " + short_number(raw.points.positions[i].z()) +
+                         ")");
+  if (!raw.has_normals) return;
+  std::size_t zero = 0, first_zero = 0, first_nonzero = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec<3>& normal = raw.points.normals[i];
+    if (!normal.allFinite())
+      fail(raw.path, raw.where(i) + ": non-finite normal (" + short_number(normal.x()) + " " +
+                         short_number(normal.y()) + " " + short_number(normal.z()) + ")");
+    if (!normal.isZero(0.0)) {
+      first_nonzero = std::min(first_nonzero, i);
+    } else if (zero++ == 0) {
+      first_zero = i;
+    }
+  }
+  if (n > 0 && zero == n) {
+    raw.has_normals = false;
+    raw.warnings.push_back(raw.path + ": every normal is zero; read as a point set without normals");
+    return;
+  }
+  if (zero > 0)
+    fail(raw.path, raw.where(first_zero) + ": zero-length normal (" + std::to_string(zero) +
+                       " points have one, while " + raw.where(first_nonzero) + " has a normal)");
+  std::size_t normalised = 0;
+  double worst = 0.0;
+  for (Vec<3>& normal : raw.points.normals) {
+    const double length = normal.norm();
+    if (std::abs(length - 1.0) <= kUnitTolerance) continue;
+    // A normal whose squared length overflows has a finite, non-zero norm from
+    // Eigen's stableNorm; plain norm() would give inf.
+    const double stable = std::isfinite(length) && length > 0.0 ? length : normal.stableNorm();
+    normal /= stable;
+    worst = std::max(worst, std::abs(stable - 1.0));
+    ++normalised;
+  }
+  if (worst > kNormaliseWarning)
+    raw.warnings.push_back(raw.path + ": " + std::to_string(normalised) +
+                           " normals were not of unit length and were normalised (the farthest had length off by " +
+                           short_number(worst) + ")");
+}
+
+// The first point (if any) that does not lie in the plane z = 0 with its normal in it.
+std::optional<std::size_t> first_off_plane(const PointSet<3>& points) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points.positions[i].z() != 0.0 || (i < points.normals.size() && points.normals[i].z() != 0.0)) return i;
+  return std::nullopt;
+}
+
+int decide_dimension(RawPointFile& raw, int dimension_override) {
+  const std::optional<std::size_t> off_plane = first_off_plane(raw.points);
+  const int dimension = dimension_override != 0 ? dimension_override : raw.declared_dimension;
+  if (dimension == 2 && off_plane) {
+    const std::size_t i = *off_plane;
+    const std::string why =
+        dimension_override != 0 ? "the dimension is forced to 2 (--dim 2)" : "the file says it holds a 2D set";
+    fail(raw.path, raw.where(i) + ": z = " + short_number(raw.points.positions[i].z()) + ", nz = " +
+                       short_number(raw.points.normals[i].z()) + ", but " + why + ", which needs z = 0 and nz = 0");
+  }
+  if (dimension != 0) return dimension;
+  if (raw.points.empty() || off_plane) return 3;
+  raw.warnings.push_back(raw.path + ": every z" + (raw.has_normals ? " and nz" : "") +
+                         " is 0, so the set is read as 2D (force the dimension with --dim 3 to keep it 3D)");
+  return 2;
+}
+
+void check_writable(const PointSet<3>& points, const std::string& path, bool& with_normals) {
+  auto bad = [&](const std::string& what) { throw std::invalid_argument("cannot write " + path + ": " + what); };
+  if (!points.normals.empty() && points.normals.size() != points.size())
+    bad(std::to_string(points.size()) + " positions but " + std::to_string(points.normals.size()) + " normals");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!points.positions[i].allFinite()) bad("point " + std::to_string(i) + " has a non-finite coordinate");
+  std::size_t zero = 0, first_zero = 0;
+  for (std::size_t i = 0; i < points.normals.size(); ++i) {
+    if (!points.normals[i].allFinite()) bad("point " + std::to_string(i) + " has a non-finite normal");
+    if (points.normals[i].isZero(0.0) && zero++ == 0) first_zero = i;
+  }
+  with_normals = zero < points.normals.size();
+  if (with_normals && zero > 0) bad("point " + std::to_string(first_zero) + " has a zero normal while others have one");
+}
+
+// Writes through a temporary file in the target's directory, renamed over the
+// target once complete: a failure leaves the old file (or no file) behind.
+template <typename WriteBody>
+void write_atomically(const std::string& path, WriteBody&& write_body) {
+  const fs::path target(path);
+  const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::random_device entropy;
+  fs::path temporary;
+  std::FILE* file = nullptr;
+  int error = 0;
+  for (int attempt = 0; attempt < 16 && !file; ++attempt) {
+    std::string name = target.filename().string();
+    name.insert(0, 1, '.');  // hidden while incomplete
+    temporary = directory / (name + ".tmp" + std::to_string(entropy()));
+    errno = 0;
+    file = std::fopen(temporary.c_str(), "wbx");  // x: never reuse a file that is already there
+    error = errno;
+    if (!file && error != EEXIST) break;
+  }
+  if (!file)
+    throw std::runtime_error(path + ": cannot create a temporary file in " + directory.string() + ": " +
+                             std::strerror(error));
+  try {
+    detail::FileSink sink(file, path);
+    write_body(sink);
+    sink.flush();
+    const int closed = std::fclose(file);
+    file = nullptr;
+    if (closed != 0) throw std::runtime_error(path + ": write failed: " + std::strerror(errno));
+    std::error_code rename_error;
+    fs::rename(temporary, target, rename_error);
+    if (rename_error) throw std::runtime_error(path + ": cannot replace the file: " + rename_error.message());
+  } catch (...) {
+    if (file) std::fclose(file);
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
+  }
+}
+
+void write_3d(const std::string& path, const PointSet<3>& points, int dimension, PointFileFormat format) {
+  bool with_normals = false;
+  check_writable(points, path, with_normals);
+  write_atomically(path, [&](detail::FileSink& sink) {
+    if (format == PointFileFormat::xyz) {
+      detail::write_xyz(sink, points, dimension, with_normals);
+    } else {
+      detail::write_ply(sink, points, dimension, with_normals, format);
+    }
+  });
+}
+
+}  // namespace
+
+const char* to_string(PointFileFormat format) {
+  switch (format) {
+    case PointFileFormat::ply_ascii:
+      return "ply_ascii";
+    case PointFileFormat::ply_binary_little_endian:
+      return "ply_binary_little_endian";
+    case PointFileFormat::ply_binary_big_endian:
+      return "ply_binary_big_endian";
+    case PointFileFormat::xyz:
+      return "xyz";
+  }
+  return "?";
+}
+
+PointFileFormat format_from_extension(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".ply") return PointFileFormat::ply_binary_little_endian;
+  if (extension == ".xyz") return PointFileFormat::xyz;
+  if (extension.empty()) throw std::invalid_argument(path + ": no file extension (expected .ply or .xyz)");
+  throw std::invalid_argument(path + ": unknown point-set file extension '" + extension + "' (expected .ply or .xyz)");
+}
+
+LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
+  if (dimension_override != 0 && dimension_override != 2 && dimension_override != 3)
+    throw std::invalid_argument("dimension must be 2 or 3 (or 0 to read it from the file), got " +
+                                std::to_string(dimension_override));
+  const PointFileFormat format = format_from_extension(path);
+  std::error_code error;
+  if (fs::is_directory(path, error)) fail(path, "is a directory, not a point-set file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error) fail(path, "cannot tell its size: " + error.message());
+  if (size == 0) fail(path, "the file is empty");
+  RawPointFile raw = format == PointFileFormat::xyz ? detail::read_xyz(in, path) : detail::read_ply(in, size, path);
+  check_normals(raw);
+  LoadedPointSet loaded;
+  loaded.dimension = decide_dimension(raw, dimension_override);
+  loaded.has_normals = raw.has_normals;
+  loaded.points = std::move(raw.points);
+  if (!loaded.has_normals) std::fill(loaded.points.normals.begin(), loaded.points.normals.end(), Vec<3>::Zero());
+  loaded.warnings = std::move(raw.warnings);
+  return loaded;
+}
+
+PointSet<2> to_2d(const PointSet<3>& points) {
+  if (const std::optional<std::size_t> i = first_off_plane(points))
+    throw std::invalid_argument("point " + std::to_string(*i) +
+                                " is not a 2D point: z = " + short_number(points.positions[*i].z()) +
+                                (*i < points.normals.size() ? ", nz = " + short_number(points.normals[*i].z()) : ""));
+  PointSet<2> out;
+  out.positions.reserve(points.size());
+  for (const Vec<3>& p : points.positions) out.positions.emplace_back(p.x(), p.y());
+  out.normals.reserve(points.normals.size());
+  for (const Vec<3>& n : points.normals) out.normals.emplace_back(n.x(), n.y());
+  return out;
+}
+
+PointSet<3> to_3d(const PointSet<2>& points) {
+  PointSet<3> out;
+  out.positions.reserve(points.size());
+  for (const Vec<2>& p : points.positions) out.positions.emplace_back(p.x(), p.y(), 0.0);
+  out.normals.reserve(points.normals.size());
+  for (const Vec<2>& n : points.normals) out.normals.emplace_back(n.x(), n.y(), 0.0);
+  return out;
+}
+
+void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format) {
+  write_3d(path, to_3d(points), 2, format);
+}
+
+void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format) {
+  write_3d(path, points, 3, format);
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  write_atomically(path, [&](detail::FileSink& sink) { sink.write(text); });
+}
+
+}  // namespace amls

@@ -1,0 +1,81 @@
+#pragma once
+// Point-set files: PLY (ASCII, binary little and big endian) and XYZ, read and
+// written in 2D and 3D.
+//
+// Reading
+// - PLY: the `vertex` element's `x y z` and, if present, `nx ny nz` or
+//   `normal_x normal_y normal_z`, of any PLY scalar type. Other properties and
+//   other elements (faces, colours, lists) are read past and ignored. In ASCII,
+//   one item per line; blank lines are skipped.
+// - XYZ: one point per line, `x y z` or `x y z nx ny nz`; a 2D set may also be
+//   written `x y` or `x y nx ny` (all lines alike). `#` starts a comment line.
+// - CRLF line ends are accepted everywhere.
+// - The dimension is, in order: `dimension_override` if it is 2 or 3; else the
+//   file's `amls dim N` comment (`comment amls dim 2` in PLY, `# amls dim 2` in
+//   XYZ) or, in XYZ, 2 or 4 columns; else 2 if every z (and every nz) is 0,
+//   with a warning; else 3. A set read as 2D must have z = 0 and nz = 0.
+// - Normals of length 1 within 1e-12 are kept bit for bit (so that round trips
+//   are exact); others are normalised (a warning says so when some were off by
+//   more than 1e-4, i.e. were not unit normals stored in float). A file whose
+//   normals are all zero is read as a file without normals, with a warning; a
+//   zero normal among non-zero ones is an error, since a surface needs every
+//   point oriented.
+// - Errors throw std::runtime_error naming the file and, where it helps, the
+//   line or the vertex. Header counts are checked against the file's size
+//   before anything is allocated.
+//
+// Writing
+// - PLY with `double` properties, XYZ and ASCII PLY with the shortest decimal
+//   that reads back as the same double: every round trip is bit-exact.
+// - 2D sets are written with z = 0, nz = 0 and an `amls dim 2` comment; 3D sets
+//   carry `amls dim 3`, so that a flat 3D set stays 3D when read back.
+// - Normals are written unless the set has none (an empty normal array, or all
+//   normals zero as read from a file without normals).
+// - The file is written to a temporary file in the same directory and renamed
+//   over `path`: an export that fails (bad value, full disk, ...) leaves any
+//   previous file intact and no partial file behind. There is no fsync, so this
+//   protects against failures of the process, not of the machine.
+#include <string>
+#include <vector>
+
+#include "core/geometry/point_set.hpp"
+
+namespace amls {
+
+enum class PointFileFormat { ply_ascii, ply_binary_little_endian, ply_binary_big_endian, xyz };
+
+const char* to_string(PointFileFormat format);
+
+// `.ply` -> binary little endian (the compact, exact choice), `.xyz` -> xyz; the
+// extension's case does not matter. Throws std::invalid_argument otherwise.
+PointFileFormat format_from_extension(const std::string& path);
+
+// A point set as read from a file. Both dimensions are held in 3D: a 2D set
+// has z = 0 and nz = 0 (to_2d() drops them).
+struct LoadedPointSet {
+  int dimension = 3;
+  PointSet<3> points;
+  // false: the file had no normals (or only zero ones) and every normal is zero.
+  bool has_normals = false;
+  // Things the caller should tell the user (each names the file).
+  std::vector<std::string> warnings;
+};
+
+// dimension_override: 0 decides from the file, 2 or 3 forces the dimension.
+// The format is chosen by the extension (any PLY encoding is read from `.ply`).
+LoadedPointSet read_point_set(const std::string& path, int dimension_override = 0);
+
+// Throws std::invalid_argument naming the first point with z != 0 or nz != 0.
+PointSet<2> to_2d(const PointSet<3>& points);
+PointSet<3> to_3d(const PointSet<2>& points);
+
+// Throws std::invalid_argument for non-finite values, a normal array of
+// another size than the positions, or a zero normal among non-zero ones; and
+// std::runtime_error naming `path` when the file cannot be written.
+void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format);
+void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format);
+
+// Writes `text` to `path` the same way: through a temporary file renamed over it.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace amls

@@ -1,0 +1,90 @@
+#pragma once
+// Internal to the point-set file code (point_set_io.cpp, ply_format.cpp,
+// xyz_format.cpp): what a format's reader hands back before the dimension is
+// decided and the normals are checked, the byte sink the writers fill, and the
+// text helpers both formats share.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <istream>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/point_set.hpp"
+#include "core/io/point_set_io.hpp"
+
+namespace amls::detail {
+
+struct RawPointFile {
+  std::string path;
+  PointSet<3> points;  // normals all zero when has_normals is false
+  bool has_normals = false;
+  // From an `amls dim N` comment (or, in XYZ, 2 or 4 columns); 0 if the file does not say.
+  int declared_dimension = 0;
+  // For text formats, the line each point came from, so that messages can name it.
+  std::vector<std::size_t> lines;
+  std::vector<std::string> warnings;
+  // PLY: the face element's polygons, fan-triangulated (indices checked against the vertex count).
+  bool has_faces = false;
+  std::uint64_t faces = 0;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::string face_problem;  // the first face that could not be used (skipped), if any
+
+  // "line 12" or "vertex 5": where point i stands in the file.
+  std::string where(std::size_t i) const;
+};
+
+// Throws std::runtime_error("path: what").
+[[noreturn]] void fail(const std::string& path, const std::string& what);
+
+// Reads up to and including the next '\n' and drops a final '\r'. Returns false
+// at the end of the file when nothing was read. Throws if the line is longer
+// than `max_length` (so that a binary file read as text cannot fill memory).
+bool read_line(std::istream& in, std::string& line, std::size_t max_length, const std::string& path,
+               std::size_t line_number);
+
+// 'text', in quotes, for messages.
+std::string quoted(std::string_view text);
+
+// Splits on spaces and tabs; the views point into `text`.
+void split_words(std::string_view text, std::vector<std::string_view>& words);
+
+// The whole word as a number, or nothing. A leading '+' is accepted; "nan" and
+// "inf" are numbers here (the caller rejects them with a better message).
+std::optional<double> parse_double(std::string_view word);
+std::optional<std::int64_t> parse_integer(std::string_view word);
+
+// The N of a comment `amls dim N` (given the comment's words after `comment`
+// or `#`), 0 if the comment is anything else; throws unless N is 2 or 3.
+int parse_dimension_comment(std::span<const std::string_view> words, const std::string& path, std::size_t line_number);
+
+// Appends the shortest decimal that reads back as exactly `value`.
+void append_double(std::string& out, double value);
+
+// Buffered output to a file that throws, naming `path`, when a write fails.
+class FileSink {
+ public:
+  FileSink(std::FILE* file, std::string path) : file_(file), path_(std::move(path)) {}
+  void write(std::string_view bytes);
+  void flush();
+
+ private:
+  std::FILE* file_;
+  std::string path_;
+  std::string buffer_;
+};
+
+// Read the rest of `in` (whose first `file_size` bytes are the file).
+RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::string& path);
+RawPointFile read_xyz(std::istream& in, const std::string& path);
+
+// `points` holds a 2D set as z = 0; `with_normals` says whether to write normals.
+void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, PointFileFormat format);
+void write_xyz(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals);
+
+}  // namespace amls::detail

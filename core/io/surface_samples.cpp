@@ -1,0 +1,79 @@
+#include "core/io/surface_samples.hpp"
+
+#include <stdexcept>
+
+#include "core/io/mesh_sampling.hpp"
+#include "core/surface/normal_estimation.hpp"
+#include "core/io/point_set_io.hpp"
+
+namespace amls {
+
+namespace {
+
+template <int D>
+NormalEstimation estimate_in(PointSet<3>& points, double radius, int threads) {
+  ThreadPool pool(threads);
+  if constexpr (D == 2) {
+    PointSet<2> flat = to_2d(points);
+    NormalEstimation report = estimate_normals<2>(flat, radius, pool);
+    points = to_3d(flat);
+    return report;
+  } else {
+    return estimate_normals<3>(points, radius, pool);
+  }
+}
+
+}  // namespace
+
+SurfaceSamples load_surface_samples(const std::string& path, const SurfaceSampleOptions& options) {
+  SurfaceSamples out;
+  if (is_mesh_file(path)) {
+    if (options.dimension == 2) throw std::runtime_error(path + ": a triangle mesh is a 3D shape, not 2D");
+    const TriangleMesh mesh = read_mesh(path);
+    if (mesh.triangles.empty()) throw std::runtime_error(path + ": the mesh has no faces");
+    MeshSamples samples;
+    try {
+      samples = sample_mesh(mesh, options.spacing);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(path + ": " + e.what());
+    }
+    out.dimension = 3;
+    out.points = std::move(samples.points);
+    out.source = "mesh of " + std::to_string(mesh.triangles.size()) + " triangles, sampled at spacing " +
+                 std::to_string(options.spacing) + " with face normals";
+    if (samples.degenerate_triangles > 0)
+      out.warnings.push_back(path + ": " + std::to_string(samples.degenerate_triangles) +
+                             " triangles of zero area were skipped");
+    if (samples.boundary_edges > 0)
+      out.warnings.push_back(path + ": the mesh is open (" + std::to_string(samples.boundary_edges) +
+                             " edges belong to one triangle only): its surface has a rim there");
+    if (samples.nonmanifold_edges > 0)
+      out.warnings.push_back(path + ": " + std::to_string(samples.nonmanifold_edges) +
+                             " edges belong to three or more triangles");
+    if (samples.flipped)
+      out.warnings.push_back(path + ": the faces are wound clockwise seen from outside; normals were flipped outward");
+    return out;
+  }
+  LoadedPointSet loaded = read_point_set(path, options.dimension);
+  out.warnings = std::move(loaded.warnings);
+  if (loaded.points.empty()) throw std::runtime_error(path + ": holds no points");
+  out.dimension = loaded.dimension;
+  out.points = std::move(loaded.points);
+  if (loaded.has_normals) {
+    out.source = "point set of " + std::to_string(out.points.size()) + " points with normals";
+    return out;
+  }
+  NormalEstimation report;
+  try {
+    report = out.dimension == 2 ? estimate_in<2>(out.points, options.normal_radius, options.threads)
+                                : estimate_in<3>(out.points, options.normal_radius, options.threads);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": cannot estimate normals: " + e.what());
+  }
+  out.source = "point set of " + std::to_string(out.points.size()) +
+               " points without normals; normals estimated (Pratt fit, oriented over a neighbour graph)";
+  for (const std::string& warning : report.warnings) out.warnings.push_back(path + ": " + warning);
+  return out;
+}
+
+}  // namespace amls

@@ -1,0 +1,88 @@
+#include "core/run/bench_suite.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/deform/flow_deformation.hpp"
+#include "core/run/flow_test.hpp"
+#include "core/util/process_memory.hpp"
+#include "core/geometry/shapes.hpp"
+
+namespace amls {
+
+namespace {
+
+BenchCase from_flow_test(const std::string& name, const FlowTestReport& r) {
+  BenchCase c;
+  c.name = name;
+  c.points = r.points_max;
+  c.points_processed = r.points_processed;
+  c.timings = r.timings;
+  c.peak_memory_mib = r.peak_memory_mib;
+  c.threads = r.config.threads;
+  char text[160];
+  if (r.dimension == 2) {
+    std::snprintf(text, sizeof text, "L1 error %.3g, %s", r.l1_error, r.broken ? "broken" : "ok");
+  } else {
+    std::snprintf(text, sizeof text, "volume loss %.2f %%, %s", 100.0 * r.volume_loss, r.broken ? "broken" : "ok");
+  }
+  c.result = text;
+  return c;
+}
+
+std::string sphere_step_name(std::size_t points) {
+  return "3D sphere step, " + std::to_string(points / 1000) + "k points";
+}
+
+}  // namespace
+
+BenchCase bench_sphere_step(std::size_t points, int threads) {
+  reset_peak_memory();
+  const double radius = 0.3;
+  const Vec<3> center(0.5, 0.5, 0.5);
+  // A grid-resampled sphere has about 0.83 area / h^2 points (measured: the
+  // HAVECLOSEPOINT rule keeps about 0.83 of the edge crossings' density).
+  const double h = std::sqrt(0.83 * 4.0 * std::numbers::pi * radius * radius / static_cast<double>(points));
+  DeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, threads);
+  surface.set_points(sample_sphere(center, radius, points));
+  surface.resample_only();
+  const FlowDeformation<3> rotation(std::make_shared<RigidRotation<3>>(center, 1.0, Vec<3>::UnitZ()), 1);
+  const StepStats stats = surface.step(rotation, 0.0, 0.01);
+  BenchCase c;
+  c.name = sphere_step_name(points);
+  c.points = c.points_processed = stats.points_before;
+  c.timings = stats.timings.phases();
+  c.peak_memory_mib = peak_memory_mib();
+  c.threads = threads;
+  c.result = std::to_string(stats.points_after) + " points after, h = " + std::to_string(h);
+  return c;
+}
+
+std::vector<BenchSpec> bench_suite(int threads) {
+  std::vector<BenchSpec> specs;
+  for (const FlowVariant variant : {FlowVariant::exact, FlowVariant::interpolated}) {
+    const std::string name = std::string("2D vortex 512^2 ") + to_string(variant);
+    specs.push_back({name, [name, variant, threads] {
+                       FlowTestConfig vortex;
+                       vortex.grid = 512;
+                       vortex.threads = threads;
+                       vortex.variant = variant;
+                       reset_peak_memory();
+                       return from_flow_test(name, run_vortex_test(vortex).report);
+                     }});
+  }
+  for (const std::size_t n : {50000u, 200000u, 1000000u})
+    specs.push_back({sphere_step_name(n), [n, threads] { return bench_sphere_step(n, threads); }});
+  const std::string enright_name = "3D Enright 128^3 exact";
+  specs.push_back({enright_name, [enright_name, threads] {
+                     FlowTestConfig enright;
+                     enright.grid = 128;
+                     enright.threads = threads;
+                     reset_peak_memory();
+                     return from_flow_test(enright_name, run_enright_test(enright).report);
+                   }});
+  return specs;
+}
+
+}  // namespace amls

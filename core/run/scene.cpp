@@ -1,0 +1,435 @@
+#include "core/run/scene.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/io/point_set_io.hpp"
+
+namespace amls {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr std::initializer_list<ShapeType> kShapeTypes = {ShapeType::circle, ShapeType::ellipse,
+                                                          ShapeType::sphere, ShapeType::torus,
+                                                          ShapeType::rounded_box, ShapeType::file};
+
+// Where a value stands in the scene file, for messages: `stages[1].targets[0]`.
+class Place {
+ public:
+  Place(const std::string& file, std::string where) : file_(&file), where_(std::move(where)) {}
+  Place key(const std::string& name) const { return Place(*file_, where_.empty() ? name : where_ + "." + name); }
+  Place index(std::size_t i) const { return Place(*file_, where_ + "[" + std::to_string(i) + "]"); }
+  const std::string& where() const { return where_; }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error(*file_ + ": " + (where_.empty() ? "" : where_ + ": ") + what);
+  }
+  // For a message that names its place itself.
+  [[noreturn]] void fail_in_file(const std::string& what) const { throw std::runtime_error(*file_ + ": " + what); }
+
+ private:
+  const std::string* file_;
+  std::string where_;
+};
+
+std::string type_name(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return "a boolean";
+    case json::value_t::string:
+      return "a string";
+    case json::value_t::array:
+      return "an array";
+    case json::value_t::object:
+      return "an object";
+    default:
+      return "a number";
+  }
+}
+
+std::string describe(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+double as_number(const json& j, const Place& at) {
+  if (!j.is_number()) at.fail("expected a number, got " + type_name(j));
+  const double value = j.get<double>();
+  if (!std::isfinite(value)) at.fail("not a finite number");
+  return value;
+}
+
+double as_positive(const json& j, const Place& at) {
+  const double value = as_number(j, at);
+  if (!(value > 0.0)) at.fail("must be positive, got " + describe(value));
+  return value;
+}
+
+std::size_t as_count(const json& j, const Place& at, std::size_t least) {
+  if (!j.is_number_integer()) at.fail("expected a whole number, got " + (j.is_number() ? j.dump() : type_name(j)));
+  if (j.is_number_unsigned() ? j.get<std::uint64_t>() < least : j.get<std::int64_t>() < static_cast<std::int64_t>(least))
+    at.fail("must be at least " + std::to_string(least) + ", got " + j.dump());
+  return static_cast<std::size_t>(j.get<std::uint64_t>());
+}
+
+std::string as_string(const json& j, const Place& at) {
+  if (!j.is_string()) at.fail("expected a string, got " + type_name(j));
+  return j.get<std::string>();
+}
+
+template <int D>
+Vec<D> as_vec(const json& j, const Place& at) {
+  if (!j.is_array() || j.size() != static_cast<std::size_t>(D))
+    at.fail("expected an array of " + std::to_string(D) + " numbers (the scene is " + std::to_string(D) + "D), got " +
+            (j.is_array() ? "an array of " + std::to_string(j.size()) : type_name(j)));
+  Vec<D> v;
+  for (int a = 0; a < D; ++a) v[a] = as_number(j[static_cast<std::size_t>(a)], at.index(static_cast<std::size_t>(a)));
+  return v;
+}
+
+template <int D>
+std::vector<Vec<D>> as_points(const json& j, const Place& at) {
+  if (!j.is_array()) at.fail("expected an array of points, got " + type_name(j));
+  std::vector<Vec<D>> out;
+  for (std::size_t i = 0; i < j.size(); ++i) out.push_back(as_vec<D>(j[i], at.index(i)));
+  return out;
+}
+
+// An object whose keys are read one by one; finish() rejects the ones no reader asked for.
+class ObjectReader {
+ public:
+  ObjectReader(const json& j, Place at) : j_(j), at_(std::move(at)) {
+    if (!j.is_object()) at_.fail("expected an object, got " + type_name(j));
+  }
+  const Place& place() const { return at_; }
+
+  const json* find(const std::string& key) {
+    known_.push_back(key);
+    const auto it = j_.find(key);
+    return it == j_.end() ? nullptr : &*it;
+  }
+  const json& require(const std::string& key) {
+    const json* value = find(key);
+    if (!value) at_.fail("missing the required key '" + key + "'");
+    return *value;
+  }
+  // Marks keys as known without reading them (they belong to another branch).
+  void allow(std::initializer_list<const char*> keys) { known_.insert(known_.end(), keys.begin(), keys.end()); }
+
+  void finish() const {
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      if (std::find(known_.begin(), known_.end(), it.key()) != known_.end()) continue;
+      std::string expected;
+      for (std::size_t k = 0; k < known_.size(); ++k)
+        expected += (k == 0 ? "" : k + 1 == known_.size() ? " or " : ", ") + known_[k];
+      at_.key(it.key()).fail("unknown key (expected " + expected + ")");
+    }
+  }
+
+ private:
+  const json& j_;
+  Place at_;
+  std::vector<std::string> known_;
+};
+
+ShapeType parse_shape_type(const std::string& name, const Place& at) {
+  for (ShapeType type : kShapeTypes)
+    if (name == to_string(type)) return type;
+  at.fail("unknown shape '" + name + "' (expected circle, ellipse, sphere, torus, rounded_box or file)");
+}
+
+template <int D>
+SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& scene_path) {
+  ObjectReader r(j, at);
+  SceneShape<D> shape;
+  const Place type_at = at.key("type");
+  shape.type = parse_shape_type(as_string(r.require("type"), type_at), type_at);
+  const bool plane_only = shape.type == ShapeType::circle || shape.type == ShapeType::ellipse;
+  const bool space_only = shape.type == ShapeType::sphere || shape.type == ShapeType::torus;
+  if ((plane_only && D != 2) || (space_only && D != 3))
+    type_at.fail(std::string("a ") + to_string(shape.type) + " is a " + (plane_only ? "2D" : "3D") +
+                 " shape, but the scene's dimension is " + std::to_string(D));
+  if (const json* v = r.find("spacing")) shape.spacing = as_positive(*v, at.key("spacing"));
+  auto read_center = [&] {
+    if (const json* v = r.find("center")) shape.center = as_vec<D>(*v, at.key("center"));
+  };
+  auto read_radius = [&] {
+    if (const json* v = r.find("radius")) shape.radius = as_positive(*v, at.key("radius"));
+  };
+  auto read_points = [&](std::size_t least) {
+    if (const json* v = r.find("points")) {
+      if (shape.spacing > 0.0) at.key("points").fail("give either 'points' or 'spacing', not both");
+      shape.points = as_count(*v, at.key("points"), least);
+    }
+  };
+  auto positive_vec = [&](const char* key) {
+    const Vec<D> v = as_vec<D>(r.require(key), at.key(key));
+    for (int a = 0; a < D; ++a)
+      if (!(v[a] > 0.0)) at.key(key).index(static_cast<std::size_t>(a)).fail("must be positive, got " + describe(v[a]));
+    return v;
+  };
+  switch (shape.type) {
+    case ShapeType::circle:
+    case ShapeType::sphere:
+      read_center();
+      read_radius();
+      read_points(shape.type == ShapeType::circle ? 3 : 4);
+      break;
+    case ShapeType::ellipse:
+      read_center();
+      shape.semi_axes = positive_vec("semi_axes");
+      break;
+    case ShapeType::torus:
+      read_center();
+      shape.major_radius = as_positive(r.require("major_radius"), at.key("major_radius"));
+      shape.minor_radius = as_positive(r.require("minor_radius"), at.key("minor_radius"));
+      if (!(shape.minor_radius < shape.major_radius))
+        at.key("minor_radius").fail("must be smaller than major_radius (" + describe(shape.major_radius) + ")");
+      break;
+    case ShapeType::rounded_box:
+      read_center();
+      shape.half_extents = positive_vec("half_extents");
+      shape.radius = as_number(r.require("radius"), at.key("radius"));
+      if (!(shape.radius >= 0.0) || shape.radius > shape.half_extents.minCoeff())
+        at.key("radius").fail("the corner radius must lie in [0, smallest half extent = " +
+                              describe(shape.half_extents.minCoeff()) + "], got " + describe(shape.radius));
+      break;
+    case ShapeType::file: {
+      const Place path_at = at.key("path");
+      shape.file = as_string(r.require("path"), path_at);
+      if (shape.file.empty()) path_at.fail("empty file name");
+      const fs::path base = fs::path(scene_path).parent_path();
+      shape.resolved_file = (fs::path(shape.file).is_absolute() ? fs::path(shape.file) : base / shape.file)
+                                .lexically_normal()
+                                .string();
+      std::string extension = fs::path(shape.file).extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (extension != ".ply" && extension != ".xyz" && extension != ".obj")
+        path_at.fail("unknown file type '" + extension + "' (expected .ply, .xyz or .obj)");
+      std::error_code error;
+      if (!fs::is_regular_file(shape.resolved_file, error))
+        path_at.fail("no such file: " + shape.resolved_file + " (paths are relative to the scene file)");
+      break;
+    }
+  }
+  r.finish();
+  return shape;
+}
+
+template <int D>
+DeformationHistory<D> parse_stages(const json& j, const Place& at) {
+  if (!j.is_array()) at.fail("expected an array of stages, got " + type_name(j));
+  if (j.empty()) at.fail("the history has no stage");
+  DeformationHistory<D> history;
+  for (std::size_t s = 0; s < j.size(); ++s) {
+    const Place stage_at = at.index(s);
+    ObjectReader stage(j[s], stage_at);
+    history.begin_stage(as_points<D>(stage.require("handles"), stage_at.key("handles")));
+    const json& targets = stage.require("targets");
+    const Place targets_at = stage_at.key("targets");
+    if (!targets.is_array()) targets_at.fail("expected an array of targets, got " + type_name(targets));
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      const Place target_at = targets_at.index(t);
+      ObjectReader target(targets[t], target_at);
+      HandleTarget<D> next;
+      next.handles = as_points<D>(target.require("handles"), target_at.key("handles"));
+      next.steps = as_count(target.require("steps"), target_at.key("steps"), 1);
+      target.finish();
+      history.stages.back().targets.push_back(std::move(next));
+    }
+    stage.finish();
+  }
+  try {
+    history.validate();
+  } catch (const std::invalid_argument& e) {
+    // Its messages name the place (stages[i]...) already.
+    at.fail_in_file(e.what());
+  }
+  return history;
+}
+
+template <int D>
+Scene<D> parse_scene(const json& j, const std::string& path) {
+  Scene<D> scene;
+  scene.path = path;
+  const Place root(scene.path, "");
+  ObjectReader r(j, root);
+  r.allow({"dimension"});
+  if (const json* v = r.find("name")) scene.name = as_string(*v, root.key("name"));
+  if (const json* v = r.find("description")) scene.description = as_string(*v, root.key("description"));
+  {
+    const Place grid_at = root.key("grid");
+    ObjectReader grid(r.require("grid"), grid_at);
+    const json* cells = grid.find("cells");
+    const json* spacing = grid.find("spacing");
+    if ((cells == nullptr) == (spacing == nullptr)) grid_at.fail("give exactly one of 'cells' (h = 1/cells) or 'spacing' (h)");
+    if (cells) {
+      const std::size_t n = as_count(*cells, grid_at.key("cells"), 1);
+      if (n > (std::size_t{1} << 20)) grid_at.key("cells").fail("at most 1048576 cells per unit length");
+      scene.grid_cells = static_cast<int>(n);
+    }
+    if (spacing) scene.grid_spacing = as_positive(*spacing, grid_at.key("spacing"));
+    grid.finish();
+  }
+  scene.shape = parse_shape<D>(r.require("shape"), root.key("shape"), path);
+  if (const json* v = r.find("radius_factor")) scene.radius_factor = as_positive(*v, root.key("radius_factor"));
+  if (const json* v = r.find("variant")) {
+    try {
+      scene.variant = parse_variant(as_string(*v, root.key("variant")));
+    } catch (const std::invalid_argument& e) {
+      root.key("variant").fail(e.what());
+    }
+  }
+  if (const json* v = r.find("deformation")) {
+    const Place at = root.key("deformation");
+    ObjectReader deformation(*v, at);
+    if (const json* kind = deformation.find("kind")) {
+      try {
+        scene.kind = parse_mls_kind(as_string(*kind, at.key("kind")));
+      } catch (const std::invalid_argument& e) {
+        at.key("kind").fail(e.what());
+      }
+    }
+    if (const json* alpha = deformation.find("alpha")) scene.alpha = as_positive(*alpha, at.key("alpha"));
+    deformation.finish();
+  }
+  scene.history = parse_stages<D>(r.require("stages"), root.key("stages"));
+  r.finish();
+  return scene;
+}
+
+template <int D>
+json points_json(const std::vector<Vec<D>>& points) {
+  json out = json::array();
+  for (const Vec<D>& p : points) {
+    json v = json::array();
+    for (int a = 0; a < D; ++a) v.push_back(p[a]);
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+template <int D>
+json vec_json(const Vec<D>& v) {
+  return points_json<D>({v})[0];
+}
+
+}  // namespace
+
+const char* to_string(ShapeType type) {
+  switch (type) {
+    case ShapeType::circle:
+      return "circle";
+    case ShapeType::ellipse:
+      return "ellipse";
+    case ShapeType::sphere:
+      return "sphere";
+    case ShapeType::torus:
+      return "torus";
+    case ShapeType::rounded_box:
+      return "rounded_box";
+    case ShapeType::file:
+      return "file";
+  }
+  return "?";
+}
+
+AnyScene scene_from_json(const json& j, const std::string& path) {
+  const Place root(path, "");
+  if (!j.is_object()) root.fail("expected a JSON object at the top, got " + type_name(j));
+  const auto it = j.find("dimension");
+  if (it == j.end()) root.fail("missing the required key 'dimension' (2 or 3)");
+  const std::size_t dimension = as_count(*it, root.key("dimension"), 2);
+  if (dimension == 2) return parse_scene<2>(j, path);
+  if (dimension == 3) return parse_scene<3>(j, path);
+  root.key("dimension").fail("must be 2 or 3, got " + it->dump());
+}
+
+AnyScene read_scene(const std::string& path) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) throw std::runtime_error(path + ": is a directory, not a scene file");
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the scene file: " + std::strerror(errno));
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::exception& e) {
+    throw std::runtime_error(path + ": not valid JSON: " + e.what());
+  }
+  return scene_from_json(j, path);
+}
+
+template <int D>
+json to_json(const Scene<D>& scene) {
+  json j;
+  j["dimension"] = D;
+  if (!scene.name.empty()) j["name"] = scene.name;
+  if (!scene.description.empty()) j["description"] = scene.description;
+  const SceneShape<D>& s = scene.shape;
+  json shape;
+  shape["type"] = to_string(s.type);
+  if (s.type != ShapeType::file) shape["center"] = vec_json<D>(s.center);
+  switch (s.type) {
+    case ShapeType::circle:
+    case ShapeType::sphere:
+      shape["radius"] = s.radius;
+      if (s.points > 0) shape["points"] = s.points;
+      break;
+    case ShapeType::ellipse:
+      shape["semi_axes"] = vec_json<D>(s.semi_axes);
+      break;
+    case ShapeType::torus:
+      shape["major_radius"] = s.major_radius;
+      shape["minor_radius"] = s.minor_radius;
+      break;
+    case ShapeType::rounded_box:
+      shape["half_extents"] = vec_json<D>(s.half_extents);
+      shape["radius"] = s.radius;
+      break;
+    case ShapeType::file:
+      shape["path"] = s.file;
+      break;
+  }
+  if (s.spacing > 0.0) shape["spacing"] = s.spacing;
+  j["shape"] = shape;
+  j["grid"] = scene.grid_spacing > 0.0 ? json{{"spacing", scene.grid_spacing}} : json{{"cells", scene.grid_cells}};
+  j["radius_factor"] = scene.radius_factor;
+  j["variant"] = to_string(scene.variant);
+  j["deformation"] = {{"kind", to_string(scene.kind)}, {"alpha", scene.alpha}};
+  json stages = json::array();
+  for (const HandleStage<D>& stage : scene.history.stages) {
+    json targets = json::array();
+    for (const HandleTarget<D>& target : stage.targets)
+      targets.push_back({{"steps", target.steps}, {"handles", points_json<D>(target.handles)}});
+    stages.push_back({{"handles", points_json<D>(stage.start)}, {"targets", std::move(targets)}});
+  }
+  j["stages"] = std::move(stages);
+  return j;
+}
+
+template <int D>
+void write_scene(const std::string& path, const Scene<D>& scene) {
+  scene.history.validate();
+  write_text_file(path, to_json(scene).dump(2) + "\n");
+}
+
+template json to_json<2>(const Scene<2>&);
+template json to_json<3>(const Scene<3>&);
+template void write_scene<2>(const std::string&, const Scene<2>&);
+template void write_scene<3>(const std::string&, const Scene<3>&);
+
+}  // namespace amls

@@ -1,0 +1,317 @@
+#include "core/surface/amls_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/surface/surface_offsets.hpp"
+#include "core/math/weight.hpp"
+
+namespace amls {
+
+template <int D>
+AmlsSurface<D>::AmlsSurface(const Grid<D>& grid, const AmlsParameters& parameters)
+    : grid_(grid), parameters_(parameters), radius_(parameters.radius_factor * grid.spacing()) {
+  if (!(parameters.radius_factor > 0.0) || !std::isfinite(parameters.radius_factor))
+    throw std::invalid_argument("radius factor must be positive, got " + std::to_string(parameters.radius_factor));
+  if (!(parameters.min_weight >= 0.0))
+    throw std::invalid_argument("minimum weight must be non-negative, got " + std::to_string(parameters.min_weight));
+}
+
+template <int D>
+void AmlsSurface<D>::set_points(PointSet<D> points) {
+  if (points.normals.size() != points.positions.size())
+    throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
+                                std::to_string(points.normals.size()) + " normals");
+  points_ = std::move(points);
+  hashed_ = ready_ = false;
+}
+
+template <int D>
+void AmlsSurface<D>::hash_points() {
+  ThreadPool serial(1);
+  hash_points(serial);
+}
+
+template <int D>
+void AmlsSurface<D>::hash_points(ThreadPool& pool) {
+  // Not hashed until the index is whole (the build can throw, or be cancelled).
+  hashed_ = ready_ = false;
+  index_.build(points_.positions, grid_.origin(), radius_, pool);
+  // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
+  const std::vector<std::uint32_t>& order = index_.order();
+  PointSet<D> sorted;
+  sorted.reserve(order.size());
+  for (const std::uint32_t id : order) sorted.add(points_.positions[id], points_.normals[id]);
+  points_ = std::move(sorted);
+  index_.renumber_in_cell_order();
+  hashed_ = true;
+  ready_ = false;
+}
+
+template <int D>
+NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
+  if (!hashed_) hash_points(pool);
+  const std::size_t n = points_.size();
+  pseudo_normals_.resize(n);
+  std::vector<FitStatus> status(n);
+  const double inverse_radius = 1.0 / radius_;
+  const bool filter = parameters_.orientation_filter;
+  // The bias correction reads every point's neighbours within Delta again:
+  // listed here, where they are found anyway.
+  const bool list_neighbours = D == 3 && parameters_.bias_correction;
+  if (list_neighbours) neighbours_.reset(n, pool.threads());
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+    // Points are in cell order, so consecutive points share their candidate
+    // neighbours: every point of the 3^D cells around their cell.
+    std::vector<std::uint32_t> candidates;
+    IVec<D> candidates_cell = IVec<D>::Zero();
+    bool have_candidates = false;
+    // Fits are solved a batch at a time, after their sums, side by side in
+    // SSE2 lanes (PrattFit::solve_lanes); each point gets what it would get
+    // alone. A failed fit leaves the carried normal.
+    PrattBatches<D> fits(points_.normals, pseudo_normals_, status, begin);
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec<D>& p = points_.positions[i];
+      const IVec<D> cell = index_.cell_of(p);
+      if (!have_candidates || cell != candidates_cell) {
+        have_candidates = true;
+        candidates.clear();
+        index_.for_each_in_cells(cell.array() - 1, cell.array() + 1,
+                                 [&](std::uint32_t id, const Vec<D>&) { candidates.push_back(id); });
+        candidates_cell = cell;
+      }
+      const Vec<D>& own = points_.normals[i];
+      PrattFit<D>& fit = fits.start(i);
+      std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.start(i, block) : nullptr;
+      for (const std::uint32_t id : candidates) {
+        const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
+        const double s2 = u.squaredNorm();
+        if (s2 > 1.0) continue;
+        if (listed) listed->push_back(id);
+        if (filter && points_.normals[id].dot(own) <= 0.0) continue;
+        fit.add(u, weight_of_squared_ratio(s2));
+      }
+      if (listed) neighbours_.finish(i, block);
+    }
+    fits.finish(end);
+  });
+  NormalStats stats;
+  for (FitStatus s : status) stats.count(s);
+  offsets_.clear();
+  if constexpr (D == 3) {
+    if (list_neighbours)
+      offsets_ = surface_offsets<D>(points_.positions, pseudo_normals_, neighbours_,
+                                    {radius_, parameters_.min_weight, filter}, pool);
+  }
+  ready_ = true;
+  return stats;
+}
+
+template <int D>
+void AmlsSurface<D>::require_ready() const {
+  if (!ready_) throw std::logic_error("AmlsSurface evaluated before hash_points() and update_normals()");
+}
+
+template <int D>
+Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
+  require_ready();
+  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  // Two passes over the index, as in evaluate_in(): the orientation reference, then the fit.
+  Vec<D> reference = Vec<D>::Zero();
+  double nearest = radius_ * radius_;
+  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
+    const double d2 = (q - x).squaredNorm();
+    if (d2 < nearest) {
+      nearest = d2;
+      reference = pseudo_normals_[id];
+    }
+  });
+  const bool filter = parameters_.orientation_filter;
+  const bool corrected = !offsets_.empty();
+  GradientFit<D> fit;
+  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
+    const Vec<D> d = q - x;
+    const double dd = d.squaredNorm();
+    const double w = weight_of_squared_ratio(dd * inverse_r2);
+    if (w <= 0.0 || (filter && pseudo_normals_[id].dot(reference) <= 0.0)) return;
+    fit.add(d, dd, pseudo_normals_[id], w, corrected ? offsets_[id] : 0.0);
+  });
+  return fit.solve(parameters_.min_weight);
+}
+
+template <int D>
+void AmlsSurface<D>::gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radius,
+                                std::vector<std::uint32_t>& out) const {
+  require_ready();
+  index_.gather(lo, hi, radius, out);
+}
+
+template <int D>
+void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
+                            Neighbourhood<D>& out) const {
+  // Sized for every candidate, then cut to those kept: no capacity checks in
+  // the loop. Every candidate is written and only those within reach kept: no
+  // branch on the distance, which is hard to predict.
+  const bool corrected = !offsets_.empty();
+  out.positions.resize(ids.size());
+  out.normals.resize(ids.size());
+  out.offsets.resize(corrected ? ids.size() : 0);
+  const double r2 = radius * radius;
+  std::size_t kept = 0;
+  for (const std::uint32_t id : ids) {
+    const Vec<D>& q = points_.positions[id];
+    out.positions[kept] = q;
+    out.normals[kept] = pseudo_normals_[id];
+    if (corrected) out.offsets[kept] = offsets_[id];
+    kept += (q - x).squaredNorm() > r2 ? 0 : 1;
+  }
+  out.positions.resize(kept);
+  out.normals.resize(kept);
+  out.offsets.resize(corrected ? kept : 0);
+  Vec<D> sum = Vec<D>::Zero();
+  for (const Vec<D>& n : out.normals) sum += n;
+  // Every normal within 45 degrees of the sum s: n.s > |s| cos 45 degrees,
+  // squared so that no square root holds up the test.
+  const double half_sum2 = 0.5 * sum.squaredNorm();
+  out.consistent = std::all_of(out.normals.begin(), out.normals.end(), [&](const Vec<D>& n) {
+    const double along = n.dot(sum);
+    return along > 0.0 && along * along > half_sum2;
+  });
+}
+
+template <int D>
+Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
+  const double r2 = radius_ * radius_;
+  const std::size_t n = neighbourhood.positions.size();
+  const bool filter = parameters_.orientation_filter && !neighbourhood.consistent;
+  // The orientation reference: the pseudo-normal of the point nearest to y.
+  // (Recomputing distances in the second pass is cheaper than storing them.)
+  // Tracked by index with selects, not branches: which neighbour is nearer
+  // than the ones before it is unpredictable.
+  Vec<D> reference = Vec<D>::Zero();
+  if (filter) {
+    double nearest = r2;
+    std::size_t nearest_k = n;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d2 = (neighbourhood.positions[k] - y).squaredNorm();
+      const bool nearer = d2 < nearest;
+      nearest = nearer ? d2 : nearest;
+      nearest_k = nearer ? k : nearest_k;
+    }
+    if (nearest_k < n) reference = neighbourhood.normals[nearest_k];
+  }
+  const double inverse_r2 = 1.0 / r2;
+  GradientFit<D> fit;
+  // Branch-free: a neighbour beyond Delta or filtered out adds with weight 0.
+  auto add_all = [&](auto&& add) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec<D> d = neighbourhood.positions[k] - y;
+      const double dd = d.squaredNorm();
+      const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
+      add(k, d, dd, weight_of_squared_ratio(dd * inverse_r2) * static_cast<double>(agrees));
+    }
+  };
+  if (neighbourhood.offsets.empty())
+    add_all([&](std::size_t k, const Vec<D>& d, double dd, double w) { fit.add(d, dd, neighbourhood.normals[k], w); });
+  else
+    add_all([&](std::size_t k, const Vec<D>& d, double dd, double w) {
+      fit.add(d, dd, neighbourhood.normals[k], w, neighbourhood.offsets[k]);
+    });
+  return fit.solve(parameters_.min_weight);
+}
+
+template <int D>
+void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
+                                   const std::array<Vec<D>, kCubeCorners>& corners,
+                                   std::array<Evaluation<D>, kCubeCorners>& out) const {
+  if (parameters_.orientation_filter && !neighbourhood.consistent) {
+    // Each corner has its own orientation reference: one at a time.
+    for (int v = 0; v < kCubeCorners; ++v) out[v] = evaluate_in(neighbourhood, corners[v]);
+  } else if (neighbourhood.offsets.empty()) {
+    evaluate_cube_with<false>(neighbourhood, corners, out);
+  } else {
+    evaluate_cube_with<true>(neighbourhood, corners, out);
+  }
+}
+
+template <int D>
+template <bool kCorrected>
+void AmlsSurface<D>::evaluate_cube_with(const Neighbourhood<D>& neighbourhood,
+                                        const std::array<Vec<D>, kCubeCorners>& corners,
+                                        std::array<Evaluation<D>, kCubeCorners>& out) const {
+  constexpr int V = kCubeCorners;
+  // Structure of arrays over the corners, so that each line below is one
+  // vector operation across them. Coordinates are taken from the cube's
+  // centre c, with q = p - c for a neighbour p and y the corner: then
+  // d = q - y, |d|^2 = |q|^2 - 2 q.y + |y|^2, sum w d = sum w q - y sum w and
+  // sum w d.n = sum w q.n - y . sum w n, so the loop needs no d and one
+  // product for d.n rather than D. (All terms are within a few Delta of 0, so
+  // nothing cancels badly.)
+  Vec<D> centre = Vec<D>::Zero();
+  for (const Vec<D>& corner : corners) centre += corner;
+  centre /= V;
+  double y[D][V], yy[V] = {};
+  for (int v = 0; v < V; ++v)
+    for (int a = 0; a < D; ++a) {
+      y[a][v] = corners[v][a] - centre[a];
+      yy[v] += y[a][v] * y[a][v];
+    }
+  double sum_w[V] = {}, sum_qn[V] = {}, sum_dd[V] = {}, sum_offset[V] = {}, sum_q[D][V] = {}, sum_n[D][V] = {};
+  const double inverse_r2 = 1.0 / (radius_ * radius_);
+  const std::size_t n = neighbourhood.positions.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec<D> q = neighbourhood.positions[k] - centre;
+    const Vec<D>& normal = neighbourhood.normals[k];
+    const double qq = q.squaredNorm();
+    const double qn = q.dot(normal);
+    double dd[V], s2[V], w[V];
+    for (int v = 0; v < V; ++v) dd[v] = qq + yy[v];
+    for (int a = 0; a < D; ++a)
+      for (int v = 0; v < V; ++v) dd[v] -= 2.0 * q[a] * y[a][v];
+    for (int v = 0; v < V; ++v) s2[v] = dd[v] * inverse_r2;
+    weights_of_squared_ratios(s2, w);
+    for (int v = 0; v < V; ++v) {
+      sum_w[v] += w[v];
+      sum_dd[v] += w[v] * dd[v];
+      sum_qn[v] += w[v] * qn;
+    }
+    if constexpr (kCorrected)
+      for (int v = 0; v < V; ++v) sum_offset[v] += w[v] * neighbourhood.offsets[k];
+    for (int a = 0; a < D; ++a)
+      for (int v = 0; v < V; ++v) {
+        sum_q[a][v] += w[v] * q[a];
+        sum_n[a][v] += w[v] * normal[a];
+      }
+  }
+  for (int v = 0; v < V; ++v) {
+    Vec<D> sum_d, sn;
+    double sum_dn = sum_qn[v];
+    for (int a = 0; a < D; ++a) {
+      sum_d[a] = sum_q[a][v] - y[a][v] * sum_w[v];
+      sn[a] = sum_n[a][v];
+      sum_dn -= y[a][v] * sn[a];
+    }
+    out[v] = GradientFit<D>(sum_w[v], sum_d, sn, sum_dn, sum_dd[v], sum_offset[v]).solve(parameters_.min_weight);
+  }
+}
+
+template <int D>
+PrattFit<D> AmlsSurface<D>::pratt_fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p,
+                                        const Vec<D>& carried) const {
+  const double inverse_radius = 1.0 / radius_;
+  const bool filter = parameters_.orientation_filter;
+  PrattFit<D> fit;
+  for (std::size_t k = 0; k < neighbourhood.positions.size(); ++k) {
+    if (filter && neighbourhood.normals[k].dot(carried) <= 0.0) continue;
+    const Vec<D> u = (neighbourhood.positions[k] - p) * inverse_radius;
+    fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
+  }
+  return fit;
+}
+
+template class AmlsSurface<2>;
+template class AmlsSurface<3>;
+
+}  // namespace amls

@@ -1,0 +1,72 @@
+#pragma once
+// Accuracy and sampling-quality measures (issue: metrics), computed on the MLS
+// surface of a point set.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/surface/amls_surface.hpp"
+
+namespace amls {
+
+// Nearest-neighbour spacing of a point set, in units of h.
+struct SpacingStats {
+  double min = 0.0;
+  double median = 0.0;
+  double max = 0.0;
+};
+
+template <int D>
+SpacingStats spacing_stats(const PointSet<D>& points, double h);
+// Every point's nearest-neighbour distance in units of h, sorted (empty for fewer than 2 points).
+template <int D>
+std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double h);
+// The same in the points' order, one value per point (e.g. to colour each point by it).
+template <int D>
+std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h);
+SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
+
+// Distances from each point of one set to the nearest point of another, in units of h.
+struct DistanceStats {
+  double mean = 0.0;
+  double max = 0.0;
+  std::size_t count = 0;  // points measured
+};
+
+// From every position in `from` to its nearest position in `to` (which must
+// not be empty unless `from` is).
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h);
+
+// How the zero set of F meets rays cast from a centre. 2D: one closed curve
+// around the centre is crossed exactly once by every ray (the paper's test is
+// star-shaped at the end). 3D: a closed surface around the centre is crossed an
+// odd number of times by every ray; volumes count the inside segments.
+struct RayScan {
+  bool closed = true;           // every ray passed the rule above
+  std::size_t rays = 0;
+  std::size_t bad_rays = 0;     // rays that failed it
+  std::string reason;           // why it is not closed, if it is not
+};
+
+// 2D: the area between the zero set of F and the circle (center, radius) -
+// the L1 error of the paper's Table 2 - by rays from the centre.
+struct CircleError {
+  RayScan scan;
+  double l1 = 0.0;
+};
+CircleError circle_l1_error(const AmlsSurface<2>& surface, const Vec<2>& center, double radius, ThreadPool& pool,
+                            std::size_t rays = 16384);
+
+// 3D: the enclosed volume and its symmetric difference with the sphere
+// (center, radius), by rays from the centre over a Fibonacci lattice of directions.
+struct SphereError {
+  RayScan scan;
+  double volume = 0.0;
+  double exact_volume = 0.0;
+  double symmetric_difference = 0.0;
+};
+SphereError sphere_volume_error(const AmlsSurface<3>& surface, const Vec<3>& center, double radius, ThreadPool& pool,
+                                std::size_t rays = 20000);
+
+}  // namespace amls

@@ -1,0 +1,184 @@
+#include "core/surface/normal_estimation.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/geometry/point_index.hpp"
+#include "core/surface/pratt_fit.hpp"
+#include "core/math/weight.hpp"
+
+namespace amls {
+
+namespace {
+
+// How many times the radius may double for a point with too few neighbours.
+constexpr int kWidenings = 3;
+// Neighbours per point in the orientation graph.
+template <int D>
+constexpr std::size_t kGraphNeighbours = D == 2 ? 4 : 10;
+// Tree edges with |n_i . n_j| below this (about 72 degrees) carry the sign unreliably.
+constexpr double kAmbiguousDot = 0.3;
+
+// The direction of least spread of `neighbours` about their centroid.
+template <int D>
+Vec<D> least_spread_direction(const std::vector<Vec<D>>& neighbours) {
+  Vec<D> centroid = Vec<D>::Zero();
+  for (const Vec<D>& q : neighbours) centroid += q;
+  centroid /= static_cast<double>(std::max<std::size_t>(1, neighbours.size()));
+  Mat<D> scatter = Mat<D>::Zero();
+  for (const Vec<D>& q : neighbours) scatter += (q - centroid) * (q - centroid).transpose();
+  if (neighbours.size() < 2 || !(scatter.norm() > 0.0)) return Vec<D>::Unit(D - 1);
+  const Eigen::SelfAdjointEigenSolver<Mat<D>> eigen(scatter);
+  return eigen.eigenvectors().col(0).normalized();
+}
+
+std::string position_text(const double* x, int d) {
+  std::ostringstream text;
+  text << "(";
+  for (int a = 0; a < d; ++a) text << (a ? ", " : "") << x[a];
+  text << ")";
+  return text.str();
+}
+
+}  // namespace
+
+template <int D>
+NormalEstimation estimate_normals(PointSet<D>& points, double radius, ThreadPool& pool) {
+  const std::size_t n = points.size();
+  if (n < static_cast<std::size_t>(D + 1))
+    throw std::invalid_argument("normal estimation needs at least " + std::to_string(D + 1) + " points, got " +
+                                std::to_string(n));
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw std::invalid_argument("normal estimation: the radius must be positive, got " + std::to_string(radius));
+  for (std::size_t i = 0; i < n; ++i)
+    if (!points.positions[i].allFinite())
+      throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
+  const double widest = radius * static_cast<double>(1 << kWidenings);
+  PointIndex<D> index;
+  index.build(points.positions, points.positions.front(), radius);
+
+  NormalEstimation report;
+  report.points = n;
+  std::vector<Vec<D>> normals(n);
+  std::vector<std::vector<std::uint32_t>> graph(n);
+  std::vector<char> failed(n, 0), widened(n, 0);
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    std::vector<std::pair<double, std::uint32_t>> near;
+    std::vector<Vec<D>> positions;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec<D>& p = points.positions[i];
+      bool fitted = false;
+      for (int w = 0; w <= kWidenings && !fitted; ++w) {
+        const double r = radius * static_cast<double>(1 << w);
+        near.clear();
+        positions.clear();
+        index.for_each_within(p, r, [&](std::uint32_t id, const Vec<D>& q) {
+          near.emplace_back((q - p).squaredNorm(), id);
+          positions.push_back(q);
+        });
+        if (near.size() < static_cast<std::size_t>(D + 1)) continue;
+        // The least-spread direction seeds the fit and orients it arbitrarily; the tree fixes signs.
+        const Vec<D> guess = least_spread_direction<D>(positions);
+        normals[i] = guess;
+        PrattFit<D> fit;
+        for (const Vec<D>& q : positions) {
+          const Vec<D> u = (q - p) / r;
+          fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
+        }
+        fitted = fit.solve(guess, normals[i]) == FitStatus::ok;
+        widened[i] = w > 0;
+      }
+      if (!fitted) {
+        failed[i] = 1;
+        if (near.size() < static_cast<std::size_t>(D + 1)) {
+          // Nearly isolated even at the widest radius: its D + 1 nearest points, however far (rare, so by brute force).
+          near.clear();
+          for (std::size_t j = 0; j < n; ++j)
+            near.emplace_back((points.positions[j] - p).squaredNorm(), static_cast<std::uint32_t>(j));
+          const auto keep = std::min<std::size_t>(n, D + 2);
+          std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
+          near.resize(keep);
+          positions.clear();
+          for (const auto& entry : near) positions.push_back(points.positions[entry.second]);
+        }
+        normals[i] = least_spread_direction<D>(positions);
+      }
+      // The graph: the k nearest others.
+      std::sort(near.begin(), near.end());
+      for (const auto& [d2, id] : near) {
+        if (id == i) continue;
+        graph[i].push_back(id);
+        if (graph[i].size() == kGraphNeighbours<D>) break;
+      }
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    report.failed_fits += static_cast<std::size_t>(failed[i]);
+    report.widened += static_cast<std::size_t>(widened[i]);
+  }
+  // Symmetric adjacency.
+  std::vector<std::vector<std::uint32_t>> adjacent(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t j : graph[i]) {
+      adjacent[i].push_back(j);
+      adjacent[j].push_back(static_cast<std::uint32_t>(i));
+    }
+
+  // Prim's tree from each part's highest point.
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double za = points.positions[a][D - 1], zb = points.positions[b][D - 1];
+    return za != zb ? za > zb : a < b;
+  });
+  std::vector<char> done(n, 0);
+  using Edge = std::tuple<double, std::uint32_t, std::uint32_t>;  // weight, to, from
+  std::priority_queue<Edge, std::vector<Edge>, std::greater<Edge>> frontier;
+  for (std::size_t seed : order) {
+    if (done[seed]) continue;
+    ++report.components;
+    if (normals[seed][D - 1] < 0.0) normals[seed] = -normals[seed];
+    frontier.emplace(0.0, static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed));
+    while (!frontier.empty()) {
+      const auto [weight, j, i] = frontier.top();
+      frontier.pop();
+      if (done[j]) continue;
+      done[j] = 1;
+      if (j != i) {
+        const double dot = normals[i].dot(normals[j]);
+        if (dot < 0.0) normals[j] = -normals[j];
+        if (std::abs(dot) < kAmbiguousDot && report.ambiguous_edges++ == 0) report.first_ambiguous = j;
+      }
+      for (std::uint32_t k : adjacent[j])
+        if (!done[k]) frontier.emplace(1.0 - std::abs(normals[j].dot(normals[k])), k, j);
+    }
+  }
+  points.normals = std::move(normals);
+
+  if (report.components > 1)
+    report.warnings.push_back("the points fall into " + std::to_string(report.components) +
+                              " separate parts (no neighbours between them); each part was oriented from its "
+                              "highest point, outward there - check parts that lie inside others");
+  if (report.ambiguous_edges > 0)
+    report.warnings.push_back(std::to_string(report.ambiguous_edges) +
+                              " steps of the orientation tree join normals more than 72 degrees apart, so the "
+                              "orientation is ambiguous there (first near point " +
+                              std::to_string(report.first_ambiguous) + " at " +
+                              position_text(points.positions[report.first_ambiguous].data(), D) + ")");
+  if (report.failed_fits > 0)
+    report.warnings.push_back(std::to_string(report.failed_fits) + " points have too few neighbours within " +
+                              std::to_string(widest) +
+                              " for a sphere fit; their normals are the direction of least spread of their "
+                              "nearest points");
+  return report;
+}
+
+template NormalEstimation estimate_normals<2>(PointSet<2>&, double, ThreadPool&);
+template NormalEstimation estimate_normals<3>(PointSet<3>&, double, ThreadPool&);
+
+}  // namespace amls

@@ -1,0 +1,3 @@
+#pragma once
+// An include that goes up: math may not use util.
+#include "core/util/clock.hpp"
