@@ -60,7 +60,7 @@ TEST_CASE("scene run: with resampling the clover stays close to the exact deform
     CHECK(s.spacing_h.min >= 0.3);
     CHECK(s.spacing_h.max <= 2.0);
   }
-  // The issue's bounds hold for all but a few points (the resampler leaves gaps of up to ~1.8 h).
+  // The band [0.3 h, 1.5 h] holds for all but a few points (the resampler leaves gaps of up to ~1.8 h).
   CHECK(static_cast<double>(r.spacing_above + r.spacing_below) < 0.01 * static_cast<double>(r.spacing_points));
   CHECK(r.spacing_h.median == doctest::Approx(1.0).epsilon(0.1));
 }
@@ -96,7 +96,7 @@ TEST_CASE("scene run: auto resamples fewer times than there are steps and stays 
   CHECK(r.frames_measured == r.resamples);
   CHECK(r.spacing_points == points);
   CHECK(r.spacing_h.median == doctest::Approx(1.0).epsilon(0.1));
-  CHECK(r.distance_to_exact_h.mean < 0.5);  // the bound `always` is held to (issue 4)
+  CHECK(r.distance_to_exact_h.mean < 0.5);  // the bound `always` is held to (docs/deform-results.md)
 }
 
 TEST_CASE("scene run: every:K resamples steps 0, K, 2K, ... and the final point set when it falls on one") {

@@ -1,5 +1,5 @@
 #pragma once
-// An input shape from a file, as oriented samples (issue 4): a point set with
+// An input shape from a file, as oriented samples: a point set with
 // normals (PLY, XYZ) as it is; a point set without normals with normals
 // estimated (core/surface/normal_estimation.hpp); a triangle mesh (OBJ, or PLY with
 // faces) sampled at about the given spacing with face normals

@@ -18,15 +18,14 @@
 //   next resample cuts the tip open and the curve stays broken. Under
 //   `always` the tip's radius stays at or above 1.30 h (vortex, 256² and 512²);
 //   the band keeps `auto`'s tips in that regime. At 1.2 h the 512² vortex
-//   breaks; 1.3 to 1.6 h all pass at 256² and 512² (README, "Resampling only
-//   when needed").
+//   breaks; 1.3 to 1.6 h all pass at 256² and 512² (docs/design.md,
+//   "Resampling only when needed").
 //
 // Crowding has no bound: between resamples the point count cannot grow, and
 // crowded points define the same surface; the next resample thins them.
 //
-// Cost: one neighbour pass within 2.5 h, about a tenth of a resample (0.3 ms
-// against 2.5 ms per step on the 256² vortex, 9 ms against 92 ms on Enright
-// 128³, one thread).
+// Cost: one neighbour pass within 2.5 h, about a tenth of a resample
+// (docs/performance.md).
 #include <cstddef>
 #include <string>
 

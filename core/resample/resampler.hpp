@@ -10,7 +10,7 @@
 // in 3D, leaving 32 (the paper says 44 without a figure). Other points' blocks
 // cover those vertices where the surface passes near them: leaving them out
 // changed no point of the 2D vortex runs nor of the 128^3 Enright run, and
-// saves 14 % (2D) and 19 % (3D) of the evaluations.
+// saves evaluations (docs/performance.md).
 //
 // Resample() then lists every edge between two such vertices whose values are
 // defined and of opposite signs (a value of exactly 0 counts as positive, so a
@@ -95,17 +95,14 @@ class Resampler {
   // neighbourhood selected for an earlier crossing and still reuse it (see
   // locate_crossings()): more reuse, but more zero-weight points per evaluation.
   // In 3D the wider selection holds several times the points and costs more
-  // than the selects it saves (Enright 128^3 resample phase: margin 0 6.3 s,
-  // 1h 7.5 s, 2h 8.7 s on one thread), so 3D selects per crossing.
+  // than the selects it saves (docs/performance.md), so 3D selects per crossing.
   static constexpr double kReuseMargin = D == 2 ? 2.0 : 0.0;
   // How far, as a fraction of the edge, a crossing may lie from its estimated
   // position (estimate_segment_root()) for drop_certain_losers() to be sure.
-  // In 2D this always holds as far as measured: on the 256^2 vortex 99.8 % of
-  // the estimates are within 0.01 and none is 0.1 off, and the vortex output
-  // at 128^2 to 1024^2 is byte-identical to locating every crossing (0.01
-  // changed it: L1 +7 % at 256^2). In 3D the fit gradients are rougher slope
-  // estimates (Enright 128^3: 1.2 % of the estimates are more than 0.05 off),
-  // so a few choices differ: volume change +3.678 % instead of +3.651 %.
+  // In 2D this holds on every vortex run measured: the output is the same as
+  // when every crossing is located (a tighter 0.01 changes it). In 3D the fit
+  // gradients are rougher slope estimates, so a few choices differ slightly
+  // (docs/performance.md).
   static constexpr double kEstimateUncertainty = 0.05;
 
   // Lists the edges with a sign change, each with its crossing's estimated position.
@@ -134,8 +131,8 @@ class Resampler {
   std::vector<Crossing> crossings_;
   // Slot -> a distance to its nearest crossing: drop_certain_losers()' bound
   // on it from the estimates, then keep_closest_crossings()' from the located
-  // positions. One array for both (a second one raised the million-point
-  // step's peak memory by 7 %), which holds kFar between their uses.
+  // positions. One array for both (a second one costs peak memory on large
+  // surfaces), which holds kFar between their uses.
   static constexpr double kFar = std::numeric_limits<double>::infinity();
   std::vector<double>& slot_distances();
   std::vector<double> slot_distances_;

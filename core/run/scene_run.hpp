@@ -1,5 +1,5 @@
 #pragma once
-// Runs a scene (issue 4, `amls deform`): the initial shape is deformed through
+// Runs a scene (`amls deform`): the initial shape is deformed through
 // the scene's handle stages, one MLS deformation per step, with the paper's loop
 // (section 4) - Update_Normals, Update_Function, Resample, Deform_Points, Hash -
 // and measured against the exact deformed shape.
@@ -101,7 +101,7 @@ struct SceneRunReport {
   SpacingStats spacing_h;
   std::size_t frames_measured = 0;
   // Over the same frames: points measured, and those with a nearest neighbour
-  // nearer than 0.3 h or farther than 1.5 h (the issue's bounds).
+  // nearer than 0.3 h or farther than 1.5 h (the band a well-sampled surface keeps).
   std::size_t spacing_points = 0;
   std::size_t spacing_below = 0;
   std::size_t spacing_above = 0;

@@ -36,8 +36,8 @@ struct AmlsParameters {
   bool orientation_filter = true;
   // 3D only: F is corrected by the points' smoothed, limited offsets from the
   // surface, which removes the sphere fit's outward bias on sheets and tubes
-  // (core/surface/surface_offsets.hpp). Without it the 128^3 Enright test gains 7.6 %
-  // of its volume, with it 3.7 %. Ignored in 2D, which has no such bias.
+  // (core/surface/surface_offsets.hpp; its effect on the Enright test:
+  // docs/design.md). Ignored in 2D, which has no such bias.
   bool bias_correction = true;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Accuracy and sampling-quality measures (issue: metrics), computed on the MLS
+// Accuracy and sampling-quality measures, computed on the MLS
 // surface of a point set.
 #include <cstddef>
 #include <string>

@@ -1,6 +1,5 @@
 #pragma once
-// Oriented normals for a point set that has none (issue 4: input shapes from
-// files).
+// Oriented normals for a point set that has none (input shapes from files).
 //
 // Each point's direction is the normal of its Pratt fit (the same algebraic
 // sphere fit as the AMLS surface's Step 1, core/surface/pratt_fit.hpp) over its

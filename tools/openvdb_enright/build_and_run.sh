@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Baseline for issue #7: the 3D Enright test with OpenVDB's narrow-band WENO5
+# Baseline for `amls enright`: the 3D Enright test with OpenVDB's narrow-band WENO5
 # level set (LevelSetAdvection), built outside the project's CMake build.
 #
 #   tools/openvdb_enright/build_and_run.sh [program flags...]

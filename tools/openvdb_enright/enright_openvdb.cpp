@@ -1,5 +1,5 @@
 // The 3D Enright test with OpenVDB's narrow-band level set: the baseline that
-// issue #7 compares `amls enright` against. Built on its own by
+// `amls enright` is compared against (docs/openvdb-baseline.md). Built on its own by
 // build_and_run.sh (g++ -O3 against Debian's libopenvdb-dev); not part of the
 // project's CMake build.
 //
