@@ -180,6 +180,25 @@ TEST_CASE("extract_mesh: a sphere's mesh is closed, outward, without duplicates,
   }
 }
 
+TEST_CASE("extract_mesh: a surface through grid vertices leaves no vertices in one place nor triangles of no area") {
+  // r = 16 h about a grid vertex: the sphere passes through vertices, where F is
+  // zero to rounding, and several crossed edges end there.
+  const double h = 1.0 / 64, r = 0.25;
+  const ExtractedMesh<3> out =
+      mesh_of(sample_sphere(Vec<3>(0.5, 0.5, 0.5), r, sphere_points_for_spacing(r, h)), h, Variant::exact);
+  const SurfaceMesh<3>& mesh = out.mesh;
+  CHECK(mesh_topology(mesh).closed());
+  CHECK(duplicate_vertices(mesh) == 0);
+  double smallest = 1.0;  // twice the smallest triangle's area, over h^2
+  for (const auto& t : mesh.cells)
+    smallest = std::min(smallest, (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                                          .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                                          .norm() /
+                                      (h * h));
+  // The vertices' margin of 1e-3 of an edge from its ends bounds it by about 1e-6.
+  CHECK(smallest > 5e-7);
+}
+
 TEST_CASE("extract_mesh: a circle's polyline is closed, counter-clockwise, and as long as the circle") {
   const Vec<2> center(0.5, 0.5);
   const double r = 0.2, h = 1.0 / 128;

@@ -15,6 +15,14 @@ namespace {
 template <int D>
 constexpr int kCubeCorners = 1 << D;
 
+// Mesh vertices keep at least this fraction of their edge from its ends.
+// Where F vanishes at or next to a grid vertex, the crossings on the edges
+// leaving it would otherwise meet there: vertices in one place and triangles
+// of no area, which slicers and mesh checkers reject. This moves a vertex by
+// at most 1e-3 h, far less than the mesh's chord error (the sphere test's
+// facets lie up to about 1e-2 h inside the sphere).
+constexpr double kEndMargin = 1e-3;
+
 // Corner c of the unit cube: bit a of c is the offset along axis a.
 template <int D>
 IVec<D> corner_offset(int c) {
@@ -271,7 +279,7 @@ class MeshBuilder {
                                         e.f1, guess, axis);
         }
         fallbacks[static_cast<std::size_t>(block)].value += static_cast<std::size_t>(root.fallback);
-        mesh.vertices[k] = start + root.t * step;
+        mesh.vertices[k] = start + std::clamp(root.t, kEndMargin, 1.0 - kEndMargin) * step;
         mesh.normals[k] = root.normal;
       }
     });

@@ -12,7 +12,9 @@
 // simplex that has the edge, so no vertex is duplicated. It is placed at F's
 // root on the edge (Variant::exact, the resampler's root finder) or at the
 // zero of the linear interpolant of the corner values (Variant::interpolated),
-// and carries the fitted gradient's unit normal there.
+// but at least 1e-3 of the edge from either end (so that a surface through a
+// grid vertex leaves no vertices in one place nor triangles of no area), and
+// carries the fitted gradient's unit normal there.
 //
 // F at the cube corners comes from Resampler::update_function(), which
 // evaluates it at the vertices around every point; corners outside those are
