@@ -8,7 +8,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/io/point_set_io.hpp"
 #include "core/io/raw_point_file.hpp"
 
 namespace amls {
@@ -43,70 +42,83 @@ Vec<3> in_3d(const Vec<D>& v) {
 }
 
 template <int D>
-std::string obj_text(const SurfaceMesh<D>& mesh) {
+void write_obj(detail::FileSink& sink, const SurfaceMesh<D>& mesh) {
   std::string text = "# amls surface mesh (" + std::to_string(D) + "D): " + std::to_string(mesh.vertices.size()) +
                      " vertices, " + std::to_string(mesh.cells.size()) + (D == 3 ? " triangles\n" : " segments\n");
+  sink.write(text);
   auto vector_line = [&](const char* tag, const Vec<3>& v) {
+    text.clear();
     text += tag;
     for (int a = 0; a < 3; ++a) {
       text += ' ';
       detail::append_double(text, v[a]);
     }
     text += '\n';
+    sink.write(text);
   };
   for (const Vec<D>& v : mesh.vertices) vector_line("v", in_3d<D>(v));
   for (const Vec<D>& n : mesh.normals) vector_line("vn", in_3d<D>(n));
   for (const auto& cell : mesh.cells) {
-    text += D == 3 ? "f" : "l";
+    text.clear();
+    text += D == 3 ? 'f' : 'l';
     for (const std::uint32_t v : cell) {
       const std::string index = std::to_string(std::uint64_t{v} + 1);
       text += ' ' + index;
       if (D == 3) text += "//" + index;
     }
     text += '\n';
+    sink.write(text);
   }
-  return text;
 }
 
 // Appends `value`'s bytes in little-endian order.
 template <typename T>
 void append_little_endian(std::string& out, T value) {
-  using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint8_t>>;
+  using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t,
+                                  std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint8_t>>;
   const auto bits = std::bit_cast<Bits>(value);
   for (std::size_t k = 0; k < sizeof(T); ++k) out += static_cast<char>((bits >> (8 * k)) & 0xff);
 }
 
 template <int D>
-std::string ply_bytes(const SurfaceMesh<D>& mesh) {
-  std::string out = "ply\nformat binary_little_endian 1.0\ncomment amls dim " + std::to_string(D) +
-                    "\nelement vertex " + std::to_string(mesh.vertices.size()) +
-                    "\nproperty double x\nproperty double y\nproperty double z\n"
-                    "property double nx\nproperty double ny\nproperty double nz\n";
+void write_ply(detail::FileSink& sink, const SurfaceMesh<D>& mesh) {
+  std::string bytes = "ply\nformat binary_little_endian 1.0\ncomment amls dim " + std::to_string(D) +
+                      "\nelement vertex " + std::to_string(mesh.vertices.size()) +
+                      "\nproperty double x\nproperty double y\nproperty double z\n"
+                      "property double nx\nproperty double ny\nproperty double nz\n";
   if constexpr (D == 3) {
-    out += "element face " + std::to_string(mesh.cells.size()) + "\nproperty list uchar int vertex_indices\n";
+    bytes += "element face " + std::to_string(mesh.cells.size()) + "\nproperty list uchar int vertex_indices\n";
   } else {
-    out += "element edge " + std::to_string(mesh.cells.size()) + "\nproperty int vertex1\nproperty int vertex2\n";
+    bytes += "element edge " + std::to_string(mesh.cells.size()) + "\nproperty int vertex1\nproperty int vertex2\n";
   }
-  out += "end_header\n";
-  out.reserve(out.size() + mesh.vertices.size() * 6 * sizeof(double) + mesh.cells.size() * (1 + D * 4));
+  bytes += "end_header\n";
+  sink.write(bytes);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    bytes.clear();
     const Vec<3> p = in_3d<D>(mesh.vertices[i]), n = in_3d<D>(mesh.normals[i]);
-    for (int a = 0; a < 3; ++a) append_little_endian(out, p[a]);
-    for (int a = 0; a < 3; ++a) append_little_endian(out, n[a]);
+    for (int a = 0; a < 3; ++a) append_little_endian(bytes, p[a]);
+    for (int a = 0; a < 3; ++a) append_little_endian(bytes, n[a]);
+    sink.write(bytes);
   }
   for (const auto& cell : mesh.cells) {
-    if constexpr (D == 3) append_little_endian(out, std::uint8_t{3});
-    for (const std::uint32_t v : cell) append_little_endian(out, static_cast<std::int32_t>(v));
+    bytes.clear();
+    if constexpr (D == 3) append_little_endian(bytes, std::uint8_t{3});
+    for (const std::uint32_t v : cell) append_little_endian(bytes, static_cast<std::int32_t>(v));
+    sink.write(bytes);
   }
-  return out;
 }
 
 template <int D>
 void write_mesh(const std::string& path, const SurfaceMesh<D>& mesh) {
   const MeshFileFormat format = mesh_format_from_extension(path);
   check_writable(path, mesh);
-  // write_text_file writes the string's bytes as they are, binary ones too.
-  write_text_file(path, format == MeshFileFormat::obj ? obj_text(mesh) : ply_bytes(mesh));
+  detail::write_through_temporary(path, [&](detail::FileSink& sink) {
+    if (format == MeshFileFormat::obj) {
+      write_obj(sink, mesh);
+    } else {
+      write_ply(sink, mesh);
+    }
+  });
 }
 
 }  // namespace

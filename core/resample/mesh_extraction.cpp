@@ -127,13 +127,17 @@ class MeshBuilder {
     int negative = 0;  // bit c: F < 0 at corner c
   };
 
-  // A mesh vertex: the edge from `from` to `from + corner_offset(direction)`,
-  // with F at its ends.
+  // A mesh vertex: the edge from `from` to `from + corner_offset(direction)`.
   struct Edge {
     IVec<D> from;
     int direction;
-    Evaluation<D> f0, f1;
   };
+
+  // F at a vertex where value() has been called.
+  const Evaluation<D>& known_value(const IVec<D>& vertex) const {
+    if (const Evaluation<D>* known = resampler_.vertex_value(vertex)) return *known;
+    return extra_values_[*extra_.find(Grid<D>::key(vertex))];
+  }
 
   // F at a vertex: update_function()'s value, else evaluated here once.
   const Evaluation<D>& value(const IVec<D>& vertex) {
@@ -177,24 +181,22 @@ class MeshBuilder {
   }
 
   // The mesh vertex on the edge between cube corners a and b (a's bits a subset of b's).
-  std::uint32_t edge_vertex(const IVec<D>& cube, const Corners& corners, int a, int b) {
+  std::uint32_t edge_vertex(const IVec<D>& cube, int a, int b) {
     const IVec<D> from = cube + corner_offset<D>(a);
     const int direction = a ^ b;
     std::uint32_t& id = (*edge_ids_.try_emplace(Grid<D>::key(from)).first)[static_cast<std::size_t>(direction - 1)];
     if (id == 0) {
-      edges_.push_back({from, direction, corners.values[static_cast<std::size_t>(a)],
-                        corners.values[static_cast<std::size_t>(b)]});
+      edges_.push_back({from, direction});
       id = static_cast<std::uint32_t>(edges_.size());  // ids are stored plus one: 0 is "none yet"
     }
     return id - 1;
   }
 
   // The mesh vertex on the edge between simplex corners i and j.
-  std::uint32_t simplex_edge(const IVec<D>& cube, const Corners& corners, const KuhnSimplex<D>& simplex, int i,
-                             int j) {
+  std::uint32_t simplex_edge(const IVec<D>& cube, const KuhnSimplex<D>& simplex, int i, int j) {
     const int a = simplex.corners[static_cast<std::size_t>(std::min(i, j))];
     const int b = simplex.corners[static_cast<std::size_t>(std::max(i, j))];
-    return edge_vertex(cube, corners, a, b);
+    return edge_vertex(cube, a, b);
   }
 
   // The simplex's part of the surface, facing the positive side. With the
@@ -220,7 +222,7 @@ class MeshBuilder {
       negatives += static_cast<int>(negative[k]);
     }
     if (negatives == 0 || negatives == static_cast<int>(n)) return;
-    auto edge = [&](int i, int j) { return simplex_edge(cube, corners, simplex, i, j); };
+    auto edge = [&](int i, int j) { return simplex_edge(cube, simplex, i, j); };
     if (negatives == 1 || negatives == static_cast<int>(n) - 1) {
       const bool lone_negative = negatives == 1;
       int lone = 0;
@@ -267,16 +269,18 @@ class MeshBuilder {
     pool.parallel_for(edges_.size(), [&](std::size_t begin, std::size_t end, int block) {
       for (std::size_t k = begin; k < end; ++k) {
         const Edge& e = edges_[k];
+        const Evaluation<D>& f0 = known_value(e.from);
+        const Evaluation<D>& f1 = known_value(e.from + corner_offset<D>(e.direction));
         const Vec<D> start = grid.vertex_position(e.from);
         const Vec<D> step = h * corner_offset<D>(e.direction).template cast<double>();
         const int axis = std::countr_zero(static_cast<unsigned>(e.direction));
         SegmentRoot<D> root;
         if (variant == Variant::interpolated) {
-          root = interpolate_segment_root(e.f0, e.f1, axis);
+          root = interpolate_segment_root(f0, f1, axis);
         } else {
-          const double guess = estimate_segment_root<D>(e.f0, e.f1, step);
-          root = locate_segment_root<D>([&](const Vec<D>& y) { return surface_.evaluate(y); }, start, step, e.f0,
-                                        e.f1, guess, axis);
+          const double guess = estimate_segment_root<D>(f0, f1, step);
+          root = locate_segment_root<D>([&](const Vec<D>& y) { return surface_.evaluate(y); }, start, step, f0, f1,
+                                        guess, axis);
         }
         fallbacks[static_cast<std::size_t>(block)].value += static_cast<std::size_t>(root.fallback);
         mesh.vertices[k] = start + std::clamp(root.t, kEndMargin, 1.0 - kEndMargin) * step;
