@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <numbers>
@@ -19,6 +20,7 @@
 #include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/resample/mesh_extraction.hpp"
+#include "core/run/mesh_export.hpp"
 #include "surface_fixtures.hpp"
 #include "temp_dir.hpp"
 
@@ -159,6 +161,8 @@ TEST_CASE("extract_mesh: a sphere's mesh is closed, outward, without duplicates,
     CHECK(topology.misoriented == 0);
     CHECK(out.stats.undefined_cubes == 0);
     CHECK(out.stats.root_fallbacks == 0);
+    // On a closed, well-sampled surface every corner comes from update_function().
+    CHECK(out.stats.extra_evaluations == 0);
     CHECK(duplicate_vertices(mesh) == 0);
     // Euler characteristic V - E + F of a sphere.
     CHECK(static_cast<long>(mesh.vertices.size()) - static_cast<long>(topology.facets) +
@@ -245,6 +249,7 @@ TEST_CASE("extract_mesh: where F is undefined the mesh has a boundary, counted, 
   const ExtractedMesh<3> out = mesh_of(cap, h, Variant::exact);
   const MeshTopology topology = mesh_topology(out.mesh);
   CHECK(out.stats.undefined_cubes > 0);
+  CHECK(out.stats.extra_evaluations > 0);  // the rim's cubes reach past the vertices around the points
   CHECK(topology.boundary > 0);
   CHECK(topology.non_manifold == 0);
   CHECK(topology.misoriented == 0);
@@ -361,4 +366,36 @@ TEST_CASE("write_surface_mesh: a bad extension or a broken mesh is refused befor
   CHECK_THROWS_AS(write_surface_mesh(dir.file("t.ply"), mesh), std::invalid_argument);
   CHECK(dir.entries() == 0);
   CHECK_THROWS_AS(write_surface_mesh(dir.file("no/such/folder/t.obj"), tetrahedron()), std::runtime_error);
+}
+
+TEST_CASE("export_surface_mesh: says whether the mesh is closed, and writes no empty mesh") {
+  TempDir dir;
+  const double h = 1.0 / 32;
+  const Grid<3> grid(Vec<3>::Zero(), h);
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.25, sphere_points_for_spacing(0.25, h));
+  const MeshExport closed = export_surface_mesh(dir.file("sphere.ply"), sphere, grid, {}, Variant::exact, 1);
+  CHECK(closed.topology.closed());
+  CHECK(closed.summary() == std::to_string(closed.vertices) + " vertices, " + std::to_string(closed.cells) +
+                                " triangles, closed");
+  CHECK(read_mesh(dir.file("sphere.ply")).triangles.size() == closed.cells);
+
+  PointSet<3> cap;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+    if (sphere.positions[i].z() > 0.5) cap.add(sphere.positions[i], sphere.normals[i]);
+  const MeshExport open = export_surface_mesh(dir.file("cap.obj"), cap, grid, {}, Variant::exact, 2);
+  CHECK(open.summary().find(", " + std::to_string(open.topology.boundary) + " boundary edges") != std::string::npos);
+
+  const PointSet<2> circle = sample_circle(Vec<2>(0.5, 0.5), 0.25, 200);
+  const MeshExport curve =
+      export_surface_mesh(dir.file("circle.obj"), circle, Grid<2>(Vec<2>::Zero(), 1.0 / 64), {}, Variant::exact, 1);
+  CHECK(curve.summary().find(" segments, closed") != std::string::npos);
+
+  // Three points far apart: F is undefined everywhere on the grid.
+  PointSet<3> sparse;
+  for (int k = 0; k < 3; ++k) sparse.add(Vec<3>(0.2 + 0.3 * k, 0.5, 0.5), Vec<3>(0, 0, 1));
+  CHECK_THROWS_WITH_AS(export_surface_mesh(dir.file("none.obj"), sparse, grid, {}, Variant::exact, 1),
+                       doctest::Contains("not written"), std::runtime_error);
+  CHECK_FALSE(std::filesystem::exists(dir.file("none.obj")));
+  CHECK_THROWS_AS(export_surface_mesh(dir.file("sphere.stl"), sphere, grid, {}, Variant::exact, 1),
+                  std::invalid_argument);
 }

@@ -109,7 +109,6 @@ class MeshBuilder {
         ++out_.stats.undefined_cubes;
         continue;
       }
-      ++out_.stats.cubes;
       queue_neighbours(cube, corners.negative);
       for (const KuhnSimplex<D>& simplex : simplices_) mesh_simplex(cube, corners, simplex);
     }

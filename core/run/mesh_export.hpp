@@ -21,7 +21,8 @@ struct MeshExport {
 };
 
 // Checks the path's extension (mesh_format_from_extension) before any work.
-// `surface` must be ready to evaluate.
+// `surface` must be ready to evaluate. Throws std::runtime_error naming the
+// path, and writes nothing, when the mesh is empty.
 template <int D>
 MeshExport export_surface_mesh(const std::string& path, const AmlsSurface<D>& surface, Variant variant,
                                ThreadPool& pool);
