@@ -1,7 +1,6 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -177,7 +176,8 @@ TEST_CASE("extract_mesh: a sphere's mesh is closed, outward, without duplicates,
     // Every triangle faces away from the centre, not only consistently with its neighbours.
     std::size_t inward = 0;
     for (const auto& t : mesh.cells) {
-      const Vec<3> normal = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+      const Vec<3> normal =
+          (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
       inward += static_cast<std::size_t>(normal.dot(mesh.vertices[t[0]] - center) <= 0.0);
     }
     CHECK(inward == 0);
@@ -195,10 +195,9 @@ TEST_CASE("extract_mesh: a surface through grid vertices leaves no vertices in o
   CHECK(duplicate_vertices(mesh) == 0);
   double smallest = 1.0;  // twice the smallest triangle's area, over h^2
   for (const auto& t : mesh.cells)
-    smallest = std::min(smallest, (mesh.vertices[t[1]] - mesh.vertices[t[0]])
-                                          .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
-                                          .norm() /
-                                      (h * h));
+    smallest = std::min(
+        smallest,
+        (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm() / (h * h));
   // The vertices' margin of 1e-3 of an edge from its ends bounds it by about 1e-6.
   CHECK(smallest > 5e-7);
 }
@@ -270,9 +269,8 @@ TEST_CASE("extract_mesh: the mesh does not depend on the thread count") {
 
 TEST_CASE("write_surface_mesh: OBJ and PLY read back as the same triangle mesh") {
   TempDir dir;
-  const ExtractedMesh<3> out =
-      mesh_of(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, sphere_points_for_spacing(0.2, 1.0 / 32)), 1.0 / 32,
-              Variant::exact);
+  const ExtractedMesh<3> out = mesh_of(
+      sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, sphere_points_for_spacing(0.2, 1.0 / 32)), 1.0 / 32, Variant::exact);
   const SurfaceMesh<3>& mesh = out.mesh;
   REQUIRE(!mesh.cells.empty());
   for (const char* name : {"sphere.obj", "sphere.PLY"}) {
@@ -359,8 +357,7 @@ TEST_CASE("write_surface_mesh: a bad extension or a broken mesh is refused befor
                        std::invalid_argument);
   mesh = tetrahedron();
   mesh.cells[1][2] = 9;
-  CHECK_THROWS_WITH_AS(write_surface_mesh(dir.file("t.ply"), mesh), doctest::Contains("cell 1"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(write_surface_mesh(dir.file("t.ply"), mesh), doctest::Contains("cell 1"), std::invalid_argument);
   mesh = tetrahedron();
   mesh.normals.pop_back();
   CHECK_THROWS_AS(write_surface_mesh(dir.file("t.ply"), mesh), std::invalid_argument);
@@ -375,8 +372,8 @@ TEST_CASE("export_surface_mesh: says whether the mesh is closed, and writes no e
   const PointSet<3> sphere = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.25, sphere_points_for_spacing(0.25, h));
   const MeshExport closed = export_surface_mesh(dir.file("sphere.ply"), sphere, grid, {}, Variant::exact, 1);
   CHECK(closed.topology.closed());
-  CHECK(closed.summary() == std::to_string(closed.vertices) + " vertices, " + std::to_string(closed.cells) +
-                                " triangles, closed");
+  CHECK(closed.summary() ==
+        std::to_string(closed.vertices) + " vertices, " + std::to_string(closed.cells) + " triangles, closed");
   CHECK(read_mesh(dir.file("sphere.ply")).triangles.size() == closed.cells);
 
   PointSet<3> cap;

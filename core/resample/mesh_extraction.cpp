@@ -117,7 +117,8 @@ class MeshBuilder {
   }
 
  private:
-  static constexpr int kAllCorners = (1 << kCubeCorners<D>) - 1;
+  static constexpr int kCorners = kCubeCorners<D>;
+  static constexpr int kAllCorners = (1 << kCorners) - 1;
   static constexpr std::uint8_t kUnseen = 0, kQueued = 1, kNotStart = 2;
 
   struct Corners {

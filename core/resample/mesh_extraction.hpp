@@ -32,9 +32,9 @@
 namespace amls {
 
 struct MeshExtractionStats {
-  std::size_t undefined_cubes = 0;     // cubes the surface enters that have a corner where F is undefined
-  std::size_t extra_evaluations = 0;   // corners evaluated beyond those of update_function()
-  std::size_t root_fallbacks = 0;      // exact roots that met an undefined F and took the interpolant's zero
+  std::size_t undefined_cubes = 0;    // cubes the surface enters that have a corner where F is undefined
+  std::size_t extra_evaluations = 0;  // corners evaluated beyond those of update_function()
+  std::size_t root_fallbacks = 0;     // exact roots that met an undefined F and took the interpolant's zero
 };
 
 template <int D>

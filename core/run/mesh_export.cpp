@@ -13,7 +13,8 @@ std::string count(std::size_t n, const char* what) { return std::to_string(n) + 
 template <int D>
 MeshExport write_extracted(const std::string& path, const ExtractedMesh<D>& extracted) {
   if (extracted.mesh.cells.empty())
-    throw std::runtime_error(path + ": not written: the surface crosses no grid edge near the points (F is "
+    throw std::runtime_error(path +
+                             ": not written: the surface crosses no grid edge near the points (F is "
                              "undefined or of one sign there; are the points too sparse for h?)");
   write_surface_mesh(path, extracted.mesh);
   MeshExport out;
