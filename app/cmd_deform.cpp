@@ -11,7 +11,9 @@
 #include "app/deform_report.hpp"
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
+#include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/run/mesh_export.hpp"
 #include "core/util/staged_directory.hpp"
 
 namespace amls::app {
@@ -32,6 +34,7 @@ struct DeformOptions {
   double tracers_per_point = 50.0;
   std::size_t max_steps = 0;
   std::string json_path;
+  std::string mesh_path;
 };
 
 std::string frame_name(std::size_t step, std::size_t steps, const std::string& format) {
@@ -54,11 +57,13 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
   const PointFileFormat format = options.format == "xyz" ? PointFileFormat::xyz : PointFileFormat::ply_binary_little_endian;
   std::optional<StagedDirectory> out;
   if (!options.out_dir.empty()) out.emplace(options.out_dir, kReportName);
+  std::optional<PointSet<D>> last_frame;  // for --mesh
   FrameSink<D> frames;
-  if (out)
+  if (out || !options.mesh_path.empty())
     frames = [&](std::size_t step, const PointSet<D>& points) {
-      if (step % options.frames_every == 0 || step == steps)
+      if (out && (step % options.frames_every == 0 || step == steps))
         write_point_set(out->file(frame_name(step, steps, options.format)), points, format);
+      if (!options.mesh_path.empty() && step == steps) last_frame = points;
     };
   FrameSink<D> exact;
   if (out)
@@ -71,6 +76,16 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
       [&](std::size_t k, std::size_t n, std::size_t p) { progress.update(k, n, static_cast<double>(k), p); }, exact);
   for (const std::string& warning : report.warnings) std::cerr << "amls: warning: " << warning << "\n";
   print_summary(std::cout, report);
+  if (last_frame) {
+    const Grid<D> grid(report.grid_origin.template head<D>(), report.h);
+    std::cout << "mesh of step " << steps << ": "
+              << export_surface_mesh(options.mesh_path, *last_frame, grid, AmlsParameters{scene.radius_factor},
+                                     scene.variant, options.threads)
+                     .summary()
+              << ", wrote " << options.mesh_path << "\n";
+  } else if (!options.mesh_path.empty()) {
+    std::cerr << "amls: warning: no mesh written: the run stopped before step " << steps << "\n";
+  }
   const nlohmann::json json = to_json(report);
   if (!options.json_path.empty()) write_json_file(options.json_path, json);
   if (out) {
@@ -111,8 +126,10 @@ void add_deform_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--max-steps", options->max_steps, "stop after this many steps (0: all)")->capture_default_str();
   cmd->add_option("--json", options->json_path, "also write the JSON report to this file");
+  cmd->add_option("--mesh", options->mesh_path, "write the last frame's surface as a mesh (.obj, .ply; 2D: a polyline)");
   cmd->callback([options] {
     const ResamplePolicy policy = ResamplePolicy::parse(options->resample);
+    if (!options->mesh_path.empty()) mesh_format_from_extension(options->mesh_path);
     const AnyScene scene = read_scene(options->scene);
     if (const Scene<2>* s2 = std::get_if<Scene<2>>(&scene)) {
       run<2>(*s2, *options, policy);

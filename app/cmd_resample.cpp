@@ -5,7 +5,9 @@
 
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/run/mesh_export.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/io/surface_samples.hpp"
 
@@ -17,6 +19,7 @@ struct ResampleOptions {
   PointSetResampling resampling;
   std::string input;
   std::string output;
+  std::string mesh;
   std::string variant = "exact";
   int dimension = 0;
 };
@@ -35,6 +38,13 @@ void resample_and_write(const PointSet<D>& input, const ResampleOptions& options
             << " points in -> " << result.points.size() << " points out, h = " << result.grid.spacing()
             << ", nearest-neighbour spacing min/median/max = " << result.spacing_h.min << " / "
             << result.spacing_h.median << " / " << result.spacing_h.max << " h, wrote " << options.output << "\n";
+  if (!options.mesh.empty())
+    std::cout << "mesh: "
+              << export_surface_mesh(options.mesh, result.points, result.grid,
+                                     AmlsParameters{options.resampling.radius_factor}, options.resampling.variant,
+                                     options.resampling.threads)
+                     .summary()
+              << ", wrote " << options.mesh << "\n";
 }
 
 }  // namespace
@@ -49,6 +59,7 @@ void add_resample_command(CLI::App& app) {
       "with faces; sampled at h with face normals)");
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .xyz or .obj)")->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
+  cmd->add_option("--mesh", options->mesh, "also write the new points' surface as a mesh (.obj, .ply; 2D: a polyline)");
   CLI::Option* grid = cmd->add_option("--grid", options->resampling.grid, "cells per unit length: h = 1/N")
                           ->check(CLI::PositiveNumber)
                           ->capture_default_str();
@@ -64,6 +75,7 @@ void add_resample_command(CLI::App& app) {
     options->resampling.variant = parse_variant(options->variant);
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
+    if (!options->mesh.empty()) mesh_format_from_extension(options->mesh);
     // Meshes are sampled at h, and normals are estimated over Delta where the file has none.
     const double h = options->resampling.spacing > 0.0 ? options->resampling.spacing : 1.0 / options->resampling.grid;
     SurfaceSampleOptions sampling;

@@ -220,6 +220,20 @@ TEST_CASE("export writes the current point set - a failed export leaves the prev
   CHECK(std::filesystem::is_directory(dir.file("out.xyz")));
 }
 
+TEST_CASE("Export mesh writes the current surface as a closed mesh, or says why not") {
+  amls::test::TempDir dir;
+  EditorWorker worker;
+  worker.post(circle());
+  worker.post(command::ExportMesh{dir.file("circle.obj")});
+  worker.post(command::ExportMesh{dir.file("circle.stl")});  // an unknown format
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto messages = worker.take_messages();
+  CHECK(has_message(messages, Message::Level::info, "segments, closed to " + dir.file("circle.obj")));
+  CHECK(has_message(messages, Message::Level::error, "circle.stl"));
+  CHECK(std::filesystem::file_size(dir.file("circle.obj")) > 0);
+  CHECK_FALSE(std::filesystem::exists(dir.file("circle.stl")));
+}
+
 TEST_CASE("Save Scene writes the session's steps as a scene whose start reads back") {
   amls::test::TempDir dir;
   const std::string path = dir.file("session.json");

@@ -37,7 +37,8 @@ const char* describe(const Command& c) {
           [](const SetResampling&) { return "switching resampling"; },
           [](const SetCurveTracing&) { return "switching the curve"; }, [](const Undo&) { return "undoing"; },
           [](const Redo&) { return "redoing"; }, [](const Reset&) { return "resetting"; },
-          [](const Export&) { return "exporting"; }, [](const SaveScene&) { return "saving the scene"; }},
+          [](const Export&) { return "exporting"; }, [](const ExportMesh&) { return "exporting the mesh"; },
+          [](const SaveScene&) { return "saving the scene"; }},
       c);
 }
 

@@ -56,6 +56,9 @@ struct Reset {};
 struct Export {  // the current point set: PLY (with normals) or XYZ by the extension
   std::string path;
 };
+struct ExportMesh {  // the current surface as a mesh: OBJ or PLY by the extension (2D: a polyline)
+  std::string path;
+};
 struct SaveScene {
   std::string path;
 };
@@ -66,7 +69,7 @@ using Command =
     std::variant<command::LoadFile, command::LoadShape, command::AddHandle, command::RemoveHandle, command::BeginDrag,
                  command::MoveHandles, command::CancelDrag, command::SetVariant, command::SetGrid,
                  command::SetDeformation, command::SetResampling, command::SetCurveTracing, command::Undo,
-                 command::Redo, command::Reset, command::Export, command::SaveScene>;
+                 command::Redo, command::Reset, command::Export, command::ExportMesh, command::SaveScene>;
 
 // A load or a parameter change stops the step that is running (between its
 // phases or inside one), and so do Esc, undo, redo and reset.

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <ctime>
 #include <sstream>
 #include <thread>
@@ -48,6 +49,7 @@ EditorApp::EditorApp(const EditorOptions& options)
       browser_(std::filesystem::current_path()) {
   renderer_ = std::make_unique<SplatRenderer>();
   ui_.export_path = options.export_path;
+  ui_.mesh_path = std::filesystem::path(options.export_path).replace_extension(".obj").string();
   ui_.scene_path = options.scene_path;
   ui_.screenshot_path = options.screenshot_path;
   ui_.render.point_size_px *= window_.ui_scale();
@@ -102,6 +104,7 @@ void EditorApp::frame() {
   const Snapshot& snapshot = *shown_;
   const WorkerStatus status = worker_->status();
   const PanelActions actions{[this](Command c) { post(std::move(c)); }, [this] { export_points(); },
+                             [this] { export_mesh(); },
                              [this] { save_scene(); }, [this] { screenshot_requested_ = true; },
                              [this] { fit_view(); }};
   draw_side_panel(ui_, snapshot, status, view_, actions);
@@ -339,6 +342,12 @@ void EditorApp::write_screenshot() {
 void EditorApp::export_points() {
   log_.line("export " + ui_.export_path);
   post(command::Export{ui_.export_path});
+  if (worker_->status().busy) ui_.tell({Message::Level::info, "Exporting once the running step is done..."});
+}
+
+void EditorApp::export_mesh() {
+  log_.line("export-mesh " + ui_.mesh_path);
+  post(command::ExportMesh{ui_.mesh_path});
   if (worker_->status().busy) ui_.tell({Message::Level::info, "Exporting once the running step is done..."});
 }
 

@@ -39,6 +39,7 @@ class EditorApp {
   RenderOptions render_options() const;
   void write_screenshot();
   void export_points();
+  void export_mesh();
   void save_scene();
   void fit_view();
   void log_view();

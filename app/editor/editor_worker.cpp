@@ -8,6 +8,7 @@
 #include "app/editor/overloaded.hpp"
 #include "app/editor/sampling_quality.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/run/mesh_export.hpp"
 #include "core/run/scene.hpp"
 
 namespace amls::editor {
@@ -230,6 +231,19 @@ void EditorWorker::execute(const QueuedCommand& queued) {
                         "Exported " + describe_count(s.points().size(), "points") + " to " + c.path);
               } catch (const std::exception& e) {
                 message(Message::Level::error, std::string("Export failed (any previous file is intact): ") + e.what());
+              }
+            });
+          },
+          [&](const ExportMesh& c) {
+            require_session([&](auto& s) {
+              try {
+                const MeshExport mesh =
+                    export_surface_mesh(c.path, s.evaluable_surface(), s.settings().variant, s.pool());
+                message(mesh.topology.closed() ? Message::Level::info : Message::Level::warning,
+                        "Exported a mesh of " + mesh.summary() + " to " + c.path);
+              } catch (const std::exception& e) {
+                message(Message::Level::error,
+                        std::string("Mesh export failed (any previous file is intact): ") + e.what());
               }
             });
           },

@@ -71,6 +71,9 @@ void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& ac
   ImGui::InputText("##export", &ui.export_path);
   if (ImGui::Button("Export points (Ctrl+S)")) actions.export_points();
   ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputText("##mesh", &ui.mesh_path);
+  if (ImGui::Button("Export mesh")) actions.export_mesh();
+  ImGui::SetNextItemWidth(-1.0f);
   ImGui::InputText("##scene", &ui.scene_path);
   if (ImGui::Button("Save Scene (Ctrl+Shift+S)")) actions.save_scene();
   ImGui::SameLine();

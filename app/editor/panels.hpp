@@ -14,6 +14,7 @@ namespace amls::editor {
 struct PanelActions {
   std::function<void(Command)> post;
   std::function<void()> export_points;  // Ctrl+S
+  std::function<void()> export_mesh;    // the Export mesh button
   std::function<void()> save_scene;     // Ctrl+Shift+S
   std::function<void()> screenshot;     // F12
   std::function<void()> fit_view;       // F

@@ -256,4 +256,12 @@ void write_text_file(const std::string& path, const std::string& text) {
   write_atomically(path, [&](detail::FileSink& sink) { sink.write(text); });
 }
 
+namespace detail {
+
+void write_through_temporary(const std::string& path, const std::function<void(FileSink&)>& write_body) {
+  write_atomically(path, write_body);
+}
+
+}  // namespace detail
+
 }  // namespace amls

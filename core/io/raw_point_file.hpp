@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <istream>
 #include <optional>
 #include <span>
@@ -78,6 +79,10 @@ class FileSink {
   std::string path_;
   std::string buffer_;
 };
+
+// Writes a file as write_point_set does: `write_body` fills a sink on a
+// temporary file in the target's folder, which is renamed over `path` once complete.
+void write_through_temporary(const std::string& path, const std::function<void(FileSink&)>& write_body);
 
 // Read the rest of `in` (whose first `file_size` bytes are the file).
 RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::string& path);

@@ -1,0 +1,62 @@
+#pragma once
+// The zero set of F as a mesh (3D: triangles, 2D: a polyline), by marching
+// simplices over the grid cubes the surface crosses.
+//
+// Each cube is split into D! simplices along its main diagonal (Kuhn's
+// triangulation: simplex pi runs from the cube's lowest corner along the axes
+// in the order pi). A face shared by two cubes is split the same way from
+// either side, so the mesh has no cracks, and a simplex has no ambiguous case:
+// its corners' signs (a zero counts as positive, as in the resampler) give at
+// most two triangles or one segment. Every mesh vertex lies on a simplex edge
+// between corners of opposite signs, one vertex per edge, shared by every
+// simplex that has the edge, so no vertex is duplicated. It is placed at F's
+// root on the edge (Variant::exact, the resampler's root finder) or at the
+// zero of the linear interpolant of the corner values (Variant::interpolated),
+// but at least 1e-3 of the edge from either end (so that a surface through a
+// grid vertex leaves no vertices in one place nor triangles of no area), and
+// carries the fitted gradient's unit normal there.
+//
+// F at the cube corners comes from Resampler::update_function(), which
+// evaluates it at the vertices around every point; corners outside those are
+// evaluated here. The cubes meshed are those holding a point whose corners
+// change sign, and, from them, every cube across a face whose corners change
+// sign: the whole zero set around the points, followed to where F is
+// undefined. A cube with a corner where F is undefined is left out, so the
+// mesh has a boundary there (mesh_topology() counts it), never a patch.
+#include <cstddef>
+
+#include "core/geometry/surface_mesh.hpp"
+#include "core/resample/resampler.hpp"
+#include "core/surface/amls_surface.hpp"
+
+namespace amls {
+
+struct MeshExtractionStats {
+  std::size_t undefined_cubes = 0;    // cubes the surface enters that have a corner where F is undefined
+  std::size_t extra_evaluations = 0;  // corners evaluated beyond those of update_function()
+  std::size_t root_fallbacks = 0;     // exact roots that met an undefined F and took the interpolant's zero
+};
+
+template <int D>
+struct ExtractedMesh {
+  SurfaceMesh<D> mesh;
+  MeshExtractionStats stats;
+};
+
+// `surface` must be ready to evaluate (hashed, normals updated).
+template <int D>
+ExtractedMesh<D> extract_mesh(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
+
+// The mesh of the surface S(P) of `points` (oriented normals) on `grid`.
+template <int D>
+ExtractedMesh<D> extract_mesh(const PointSet<D>& points, const Grid<D>& grid, const AmlsParameters& parameters,
+                              Variant variant, ThreadPool& pool);
+
+extern template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&);
+extern template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&);
+extern template ExtractedMesh<2> extract_mesh<2>(const PointSet<2>&, const Grid<2>&, const AmlsParameters&, Variant,
+                                                 ThreadPool&);
+extern template ExtractedMesh<3> extract_mesh<3>(const PointSet<3>&, const Grid<3>&, const AmlsParameters&, Variant,
+                                                 ThreadPool&);
+
+}  // namespace amls

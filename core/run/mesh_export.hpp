@@ -1,0 +1,40 @@
+#pragma once
+// A point set's surface S(P) written as a mesh (`amls resample --mesh`,
+// `amls deform --mesh`, the editor's Export mesh): extract_mesh() and
+// write_surface_mesh(), with what to tell the user about the result.
+#include <string>
+
+#include "core/geometry/surface_mesh.hpp"
+#include "core/resample/mesh_extraction.hpp"
+
+namespace amls {
+
+struct MeshExport {
+  int dimension = 3;
+  std::size_t vertices = 0;
+  std::size_t cells = 0;  // triangles (3D) or segments (2D)
+  MeshTopology topology;
+  MeshExtractionStats stats;
+  // "20702 vertices, 41400 triangles, closed" or "..., 96 boundary edges"
+  // (2D: "segments", "open ends"), with any non-manifold or misoriented facets.
+  std::string summary() const;
+};
+
+// Checks the path's extension (mesh_format_from_extension) before any work.
+// `surface` must be ready to evaluate. Throws std::runtime_error naming the
+// path, and writes nothing, when the mesh is empty.
+template <int D>
+MeshExport export_surface_mesh(const std::string& path, const AmlsSurface<D>& surface, Variant variant,
+                               ThreadPool& pool);
+template <int D>
+MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
+                               const AmlsParameters& parameters, Variant variant, int threads);
+
+extern template MeshExport export_surface_mesh<2>(const std::string&, const AmlsSurface<2>&, Variant, ThreadPool&);
+extern template MeshExport export_surface_mesh<3>(const std::string&, const AmlsSurface<3>&, Variant, ThreadPool&);
+extern template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
+                                                  const AmlsParameters&, Variant, int);
+extern template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
+                                                  const AmlsParameters&, Variant, int);
+
+}  // namespace amls
