@@ -39,6 +39,13 @@ struct RawPointFile {
   std::string where(std::size_t i) const;
 };
 
+// One face's vertex indices, fan-triangulated into raw.triangles and counted
+// in raw.faces. A face that cannot be used is skipped, and the first such is
+// noted in raw.face_problem as "`where` `number`: what is wrong": only a mesh
+// reader needs the faces, so only it fails on them.
+void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::string_view where,
+              std::uint64_t number);
+
 // Throws std::runtime_error("path: what").
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 
@@ -65,6 +72,8 @@ int parse_dimension_comment(std::span<const std::string_view> words, const std::
 
 // Appends the shortest decimal that reads back as exactly `value`.
 void append_double(std::string& out, double value);
+// The same, as a string.
+std::string shortest(double value);
 
 // Buffered output to a file that throws, naming `path`, when a write fails.
 class FileSink {
@@ -82,6 +91,11 @@ class FileSink {
 // Read the rest of `in` (whose first `file_size` bytes are the file).
 RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::string& path);
 RawPointFile read_xyz(std::istream& in, const std::string& path);
+RawPointFile read_off(std::istream& in, std::uint64_t file_size, const std::string& path);
+
+// The face count a file's header declares (0 without faces), reading the header only.
+std::uint64_t ply_face_count(std::istream& in, const std::string& path);
+std::uint64_t off_face_count(std::istream& in, std::uint64_t file_size, const std::string& path);
 
 // `points` holds a 2D set as z = 0; `with_normals` says whether to write normals.
 void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, PointFileFormat format);
