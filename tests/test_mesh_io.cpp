@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/io/mesh_io.hpp"
+#include "core/io/surface_samples.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;
@@ -62,4 +63,23 @@ TEST_CASE("mesh io: PLY faces, ASCII and binary, with the vertex_indices list") 
                                      "property float z\nend_header\n0 0 0\n");
   CHECK_FALSE(is_mesh_file(dir.file("points.ply")));
   CHECK(read_mesh(dir.file("points.ply")).triangles.empty());
+}
+
+TEST_CASE("mesh io: a PLY point cloud with 'element face 0' (as MeshLab saves one) is a point set, not a faceless mesh") {
+  TempDir dir;
+  std::string text =
+      "ply\nformat ascii 1.0\ncomment MeshLab\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty uchar red\n"
+      "element face 0\nproperty list uchar int vertex_indices\nend_header\n";
+  text += "0 0 0 0 0 -1 10\n1 0 0 0 0 -1 20\n0 1 0 0 0 -1 30\n0 0 1 1 1 1 40\n";
+  write_text(dir.file("cloud.PLY"), text);
+  CHECK_FALSE(is_mesh_file(dir.file("cloud.PLY")));
+  SurfaceSampleOptions options;
+  options.spacing = 0.1;
+  options.normal_radius = 0.3;
+  const SurfaceSamples samples = load_surface_samples(dir.file("cloud.PLY"), options);
+  CHECK(samples.points.size() == 4);
+  CHECK(samples.source.find("point set of 4 points with normals") != std::string::npos);
+  CHECK_THROWS_WITH_AS(read_mesh(dir.file("cloud.stl")), doctest::Contains("unknown mesh file extension '.stl'"),
+                       std::invalid_argument);
 }

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
+#include <stdexcept>
 
 #include "core/geometry/point_index.hpp"
 #include "core/io/point_set_io.hpp"
@@ -23,6 +26,13 @@ constexpr double kNormaliseWarning = 1e-4;
 // nearest-neighbour spacing: the paper's support Delta = 3h, with h about the
 // sampling's spacing. Neighbours within twice that orient the fitted normal.
 constexpr double kFitRadiusInSpacings = 3.0;
+
+// Three significant digits, for distances in messages.
+std::string rounded(double value) {
+  std::ostringstream text;
+  text << std::setprecision(3) << value;
+  return text.str();
+}
 
 // Keeps the points whose `keep` flag is set, in their order, with their lines
 // and their entries in `flags`.
@@ -181,10 +191,10 @@ void estimate_unusable_normals(RawPointFile& raw, const std::vector<std::uint8_t
   while (!unusable[first]) ++first;
   std::string warning = raw.path + ": " + std::to_string(count) +
                         " points have a zero-length or non-finite normal (the first at " + raw.where(first) +
-                        "); their normals were estimated from the neighbours within " + shortest(radius) +
+                        "); their normals were estimated from the neighbours within " + rounded(radius) +
                         " and oriented to agree with the neighbours' normals";
   if (alone > 0)
-    warning += " (" + std::to_string(alone) + " have no neighbour with a normal within " + shortest(reach) +
+    warning += " (" + std::to_string(alone) + " have no neighbour with a normal within " + rounded(reach) +
                " and were oriented as the fits agree with the normals on the whole)";
   raw.warnings.push_back(warning);
 }
@@ -239,10 +249,17 @@ void repair_points(RawPointFile& raw, int dimension, std::vector<std::uint8_t> u
     fail(raw.path, raw.where(first) + ": zero-length or non-finite normal, and " + std::to_string(n) +
                        " points are too few to estimate it from neighbours");
   }
-  if (dimension == 2) {
-    estimate_unusable_normals<2>(raw, unusable, count);
-  } else {
-    estimate_unusable_normals<3>(raw, unusable, count);
+  try {
+    if (dimension == 2) {
+      estimate_unusable_normals<2>(raw, unusable, count);
+    } else {
+      estimate_unusable_normals<3>(raw, unusable, count);
+    }
+  } catch (const std::invalid_argument& e) {  // e.g. a spread too wide for the neighbour index's cells
+    fail(raw.path, std::to_string(count) +
+                       " points have a zero-length or non-finite normal, which cannot be "
+                       "estimated: " +
+                       e.what());
   }
 }
 
