@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -125,6 +126,44 @@ TEST_CASE("repairs in 2D: a zero normal on a circle is estimated in the plane") 
   CHECK(read.warnings.size() == 1);
   CHECK(read.points.normals[50].z() == 0.0);
   CHECK(Vec<2>(read.points.normals[50].x(), read.points.normals[50].y()).dot(circle.normals[50]) > 0.99);
+}
+
+TEST_CASE("repairs in binary PLY: messages name the vertices by their index in the file, after drops and merges") {
+  // A sphere as binary PLY with normals; vertex 3 is NaN, vertex 6 repeats vertex 5, vertex 9's normal is zero.
+  const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, 200);
+  std::string bytes = "ply\nformat binary_big_endian 1.0\nelement vertex 202\n";
+  for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) bytes += std::string("property double ") + name + "\n";
+  bytes += "end_header\n";
+  auto put = [&](const Vec<3>& p, const Vec<3>& n) {
+    for (const double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()}) {
+      char raw[8];
+      std::memcpy(raw, &v, 8);
+      if (std::endian::native != std::endian::big) std::reverse(raw, raw + 8);
+      bytes.append(raw, 8);
+    }
+  };
+  for (std::size_t i = 0, file_vertex = 0; i < sphere.size(); ++i, ++file_vertex) {
+    if (file_vertex == 3) {
+      put(Vec<3>(kNan, 0, 0), Vec<3>(0, 0, 1));
+      ++file_vertex;
+    }
+    put(sphere.positions[i], file_vertex == 9 ? Vec<3>::Zero() : sphere.normals[i]);
+    if (file_vertex == 5) {
+      put(sphere.positions[i], sphere.normals[i]);
+      ++file_vertex;
+    }
+  }
+  TempDir dir;
+  write_text(dir.file("sphere.ply"), bytes);
+  const LoadedPointSet read = read_point_set(dir.file("sphere.ply"));
+  REQUIRE(read.points.size() == 200);
+  CHECK(read.points.positions == sphere.positions);
+  CHECK(has_warning(read, "1 points with a non-finite coordinate were dropped (the first at vertex 3: nan 0 0)"));
+  CHECK(has_warning(read,
+                    "1 points repeat the exact position of an earlier point and were merged into it (the first "
+                    "at vertex 6)"));
+  CHECK(has_warning(read, "1 points have a zero-length or non-finite normal (the first at vertex 9)"));
+  CHECK(read.points.normals[7].dot(sphere.normals[7]) > 0.99);  // file vertex 9
 }
 
 TEST_CASE("repairs in binary PLY: a NaN vertex is dropped, named by its index") {

@@ -1,14 +1,12 @@
 // OFF (Geomview's object file format, also CGAL's): text only. The header
 // keyword is [ST][C][N][4][n]OFF (optional, as in Geomview; the prefixes in
-// any order), then
-// `vertices faces [edges]` on the same line or the next, then one vertex per
-// line - x y z, w if 4, the normal if N, then a colour and texture coordinates
-// that are read past - and one face per line: a count, that many 0-based
-// vertex indices, and an optional colour. `#` starts a comment anywhere.
-// Vertices are lines rather than a stream of numbers because a colour may
-// have 1, 3 or 4 components.
-#include <algorithm>
-#include <cmath>
+// any order), then `vertices faces [edges]` on the same line or the next,
+// then one vertex per line - x y z, w if 4, the normal if N, then a colour and
+// texture coordinates that are read past - and one face per line: a count,
+// that many 0-based vertex indices, and an optional colour. `#` starts a
+// comment anywhere. Vertices are lines rather than a stream of numbers
+// because a colour may have 1, 3 or 4 components. Binary OFF is refused.
+#include <iterator>
 #include <string_view>
 
 #include "core/io/raw_point_file.hpp"

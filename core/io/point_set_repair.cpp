@@ -37,18 +37,24 @@ std::string rounded(double value) {
 // Keeps the points whose `keep` flag is set, in their order, with their lines
 // and their entries in `flags`.
 void keep_points(RawPointFile& raw, const std::vector<std::uint8_t>& keep, std::vector<std::uint8_t>& flags) {
+  if (raw.lines.empty() && raw.vertices.empty()) {
+    raw.vertices.resize(keep.size());
+    std::iota(raw.vertices.begin(), raw.vertices.end(), std::size_t{0});
+  }
   std::size_t kept = 0;
   for (std::size_t i = 0; i < keep.size(); ++i) {
     if (!keep[i]) continue;
     raw.points.positions[kept] = raw.points.positions[i];
     raw.points.normals[kept] = raw.points.normals[i];
     if (i < raw.lines.size()) raw.lines[kept] = raw.lines[i];
+    if (i < raw.vertices.size()) raw.vertices[kept] = raw.vertices[i];
     if (i < flags.size()) flags[kept] = flags[i];
     ++kept;
   }
   raw.points.positions.resize(kept);
   raw.points.normals.resize(kept);
   if (!raw.lines.empty()) raw.lines.resize(kept);
+  if (!raw.vertices.empty()) raw.vertices.resize(kept);
   if (!flags.empty()) flags.resize(kept);
 }
 

@@ -9,7 +9,7 @@ namespace amls::detail {
 
 std::string RawPointFile::where(std::size_t i) const {
   if (i < lines.size()) return "line " + std::to_string(lines[i]);
-  return "vertex " + std::to_string(i);
+  return "vertex " + std::to_string(i < vertices.size() ? vertices[i] : i);
 }
 
 void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::string_view where,

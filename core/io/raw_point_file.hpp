@@ -28,6 +28,9 @@ struct RawPointFile {
   int declared_dimension = 0;
   // For text formats, the line each point came from, so that messages can name it.
   std::vector<std::size_t> lines;
+  // For binary files once points were dropped or merged, each point's vertex
+  // index in the file (empty while they are all there, in order).
+  std::vector<std::size_t> vertices;
   std::vector<std::string> warnings;
   // PLY: the face element's polygons, fan-triangulated (indices checked against the vertex count).
   bool has_faces = false;
