@@ -37,7 +37,7 @@ class OffLines {
     while (true) {
       ++number_;
       if (!read_line(in_, line_, kMaxLine, path_, number_)) return false;
-      if (number_ == 1 && line_.starts_with("\xEF\xBB\xBF")) line_.erase(0, 3);  // a UTF-8 byte order mark
+      if (number_ == 1) drop_byte_order_mark(line_);
       const std::size_t comment = line_.find('#');
       split_words(std::string_view(line_).substr(0, comment), words);
       if (!words.empty()) return true;

@@ -50,6 +50,10 @@ bool read_line(std::istream& in, std::string& line, std::size_t max_length, cons
   return any;
 }
 
+void drop_byte_order_mark(std::string& first_line) {
+  if (first_line.starts_with("\xEF\xBB\xBF")) first_line.erase(0, 3);
+}
+
 std::string quoted(std::string_view text) {
   // Built by appending: "'" + std::string(...) trips a false -Wrestrict in GCC 12 at -O3.
   std::string out;

@@ -58,6 +58,10 @@ void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64
 bool read_line(std::istream& in, std::string& line, std::size_t max_length, const std::string& path,
                std::size_t line_number);
 
+// Drops a UTF-8 byte order mark from the start of a file's first line, as
+// some Windows programs write one.
+void drop_byte_order_mark(std::string& first_line);
+
 // 'text', in quotes, for messages.
 std::string quoted(std::string_view text);
 

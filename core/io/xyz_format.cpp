@@ -121,7 +121,7 @@ RawPointFile read_xyz(std::istream& in, const std::string& path) {
   int comment_dimension = 0;
   for (std::size_t number = 1; read_line(in, line, kMaxLine, path, number); ++number) {
     auto fail_here = [&](const std::string& what) { fail(path, "line " + std::to_string(number) + ": " + what); };
-    if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // a UTF-8 byte order mark
+    if (number == 1) drop_byte_order_mark(line);
     const std::string_view text = trim(line);
     if (text.empty()) continue;
     if (text.front() == '#') {
