@@ -35,9 +35,9 @@ struct RenderCommandOptions {
 
 constexpr const char* kDescription =
     "draw a point set, mesh or scene into a PNG, headless (OpenGL 3.3 core through OSMesa; no display needed).\n"
-    "INPUT: a point set (.ply, .xyz; 2D or 3D; normals estimated where the file has none), a triangle mesh (.obj, "
-    ".ply with faces; sampled at h with face normals) or a scene (.json; its state after --step K steps, with its "
-    "handles).\n"
+    "INPUT: a point set (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D; normals estimated where the file has none), "
+    "a triangle mesh (.obj, .ply or .off with faces; sampled at h with face normals) or a scene (.json; its state "
+    "after --step K steps, with its handles).\n"
     "3D: lit, oriented splats (back faces red) in perspective. Default view: azimuth 30, elevation 20 degrees - "
     "the eye on +z turned 30 degrees towards +x and raised 20 degrees, +y up - looking at the centre of the "
     "shape's extent and framed so that it fills the image less a small margin; --view changes the direction (and, "
@@ -57,7 +57,8 @@ constexpr const char* kDescription =
 void add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", kDescription);
-  cmd->add_option("input", options->input, "point set (.ply, .xyz), mesh (.obj, .ply with faces) or scene (.json)")
+  cmd->add_option("input", options->input,
+                  "point set (.ply, .off, .xyz, .pwn, .csv, .txt), mesh (.obj, .ply, .off) or scene (.json)")
       ->required();
   cmd->add_option("--out", options->out, "PNG file to write (written whole or not at all)")->required();
   cmd->add_option("--size", options->size, "image size WIDTHxHEIGHT in pixels, each 1..16384")->capture_default_str();

@@ -54,10 +54,12 @@ void add_resample_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "resample",
       "resample a surface once on a grid (unit square/cube, or the input's padded bounding box when it lies "
-      "outside) and write the new points. Input: a point set with normals (.ply, .xyz; 2D or 3D), one without "
-      "(normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle mesh (.obj, .ply "
-      "with faces; sampled at h with face normals)");
-  cmd->add_option("input", options->input, "point set or mesh to read (.ply, .xyz or .obj)")->required();
+      "outside) and write the new points. Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D "
+      "or 3D), one without "
+      "(normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle mesh (.obj, .ply or "
+      ".off with faces; sampled at h with face normals)");
+  cmd->add_option("input", options->input, "point set or mesh to read (.ply, .off, .xyz, .pwn, .csv, .txt, .obj)")
+      ->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
   cmd->add_option("--mesh", options->mesh, "also write the new points' surface as a mesh (.obj, .ply; 2D: a polyline)");
   CLI::Option* grid = cmd->add_option("--grid", options->resampling.grid, "cells per unit length: h = 1/N")

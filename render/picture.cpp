@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/surface/curve_tracing.hpp"
+#include "core/io/file_format.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/surface/metrics.hpp"
 #include "core/io/point_set_io.hpp"
@@ -34,13 +35,6 @@ constexpr float kCurveWidthPx = 2.0f;
 constexpr float kHandleSizePx = 10.0f;
 // Framed pictures leave this fraction of the half size free around the shape.
 constexpr float kFrameMargin = 1.06f;
-
-std::string lowercase_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 std::string format_number(double value) {
   std::ostringstream out;
@@ -289,7 +283,7 @@ Picture load_picture(const std::string& path, const PictureInputOptions& options
   if (!(options.radius_factor > 0.0) || !std::isfinite(options.radius_factor))
     throw std::invalid_argument("the radius factor must be positive, got " + format_number(options.radius_factor));
   Picture picture;
-  if (lowercase_extension(path) == ".json") {
+  if (lower_extension(path) == ".json") {
     if (options.spacing != 0.0)
       throw std::invalid_argument(path +
                                   ": a scene has its own grid; --spacing and --grid are for point sets and meshes");

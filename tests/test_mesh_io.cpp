@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/io/mesh_io.hpp"
+#include "core/io/surface_samples.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;
@@ -23,8 +24,8 @@ TEST_CASE("mesh io: OBJ faces, polygons fan-triangulated, v/vt/vn corners and ne
   CHECK(mesh.triangles[2] == std::array<std::uint32_t, 3>{0, 1, 4});
   CHECK(is_mesh_file(dir.file("quad.obj")));
   write_text(dir.file("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
-  CHECK_THROWS_WITH_AS(read_mesh(dir.file("bad.obj")), doctest::Contains("bad.obj: line 3: vertex index 3 is out of range"),
-                       std::runtime_error);
+  CHECK_THROWS_WITH_AS(read_mesh(dir.file("bad.obj")),
+                       doctest::Contains("bad.obj: line 3: vertex index 3 is out of range"), std::runtime_error);
   write_text(dir.file("bad2.obj"), "v 0 0 x\n");
   CHECK_THROWS_WITH(read_mesh(dir.file("bad2.obj")), doctest::Contains("line 1: 'x' is not a finite number"));
 }
@@ -58,8 +59,29 @@ TEST_CASE("mesh io: PLY faces, ASCII and binary, with the vertex_indices list") 
   CHECK(b.triangles[1] == std::array<std::uint32_t, 3>{0, 2, 3});
   CHECK(b.vertices[2] == Vec<3>(1, 1, 0));
 
-  write_text(dir.file("points.ply"), "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                                     "property float z\nend_header\n0 0 0\n");
+  write_text(dir.file("points.ply"),
+             "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+             "property float z\nend_header\n0 0 0\n");
   CHECK_FALSE(is_mesh_file(dir.file("points.ply")));
   CHECK(read_mesh(dir.file("points.ply")).triangles.empty());
+}
+
+TEST_CASE(
+    "mesh io: a PLY point cloud with 'element face 0' (as MeshLab saves one) is a point set, not a faceless mesh") {
+  TempDir dir;
+  std::string text =
+      "ply\nformat ascii 1.0\ncomment MeshLab\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty uchar red\n"
+      "element face 0\nproperty list uchar int vertex_indices\nend_header\n";
+  text += "0 0 0 0 0 -1 10\n1 0 0 0 0 -1 20\n0 1 0 0 0 -1 30\n0 0 1 1 1 1 40\n";
+  write_text(dir.file("cloud.PLY"), text);
+  CHECK_FALSE(is_mesh_file(dir.file("cloud.PLY")));
+  SurfaceSampleOptions options;
+  options.spacing = 0.1;
+  options.normal_radius = 0.3;
+  const SurfaceSamples samples = load_surface_samples(dir.file("cloud.PLY"), options);
+  CHECK(samples.points.size() == 4);
+  CHECK(samples.source.find("point set of 4 points with normals") != std::string::npos);
+  CHECK_THROWS_WITH_AS(read_mesh(dir.file("cloud.stl")), doctest::Contains("unknown mesh file extension '.stl'"),
+                       std::invalid_argument);
 }

@@ -72,10 +72,12 @@ TEST_CASE("scene: a good scene is read with every field, and written back to the
 TEST_CASE("scene: every 3D built-in shape and a file shape relative to the scene") {
   TempDir dir;
   write_text(dir.file("points.xyz"), "0 0 1 0 0 1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 -1 0 0 -1\n");
+  write_text(dir.file("tetra.OFF"), "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   const std::string stages = R"("stages": [{"handles": [[0, 0, 1]], "targets": [{"steps": 1, "handles": [[0, 0, 1.1]]}]}])";
   for (const std::string shape :
        {R"({"type": "sphere", "radius": 0.5, "spacing": 0.1})", R"({"type": "torus", "major_radius": 1, "minor_radius": 0.3})",
-        R"({"type": "rounded_box", "half_extents": [1, 0.5, 0.5], "radius": 0.2})", R"({"type": "file", "path": "points.xyz"})"}) {
+        R"({"type": "rounded_box", "half_extents": [1, 0.5, 0.5], "radius": 0.2})", R"({"type": "file", "path": "points.xyz"})",
+        R"({"type": "file", "path": "tetra.OFF"})"}) {
     write_text(dir.file("s.json"), R"({"dimension": 3, "grid": {"spacing": 0.1}, "shape": )" + shape + ", " + stages + "}");
     const AnyScene any = read_scene(dir.file("s.json"));
     REQUIRE(std::holds_alternative<Scene<3>>(any));

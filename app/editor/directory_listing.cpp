@@ -1,15 +1,13 @@
 #include "app/editor/directory_listing.hpp"
 
 #include <algorithm>
-#include <cctype>
+
+#include "core/io/file_format.hpp"
 
 namespace amls::editor {
 
 bool is_openable_file(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".ply" || extension == ".xyz" || extension == ".json";
+  return is_point_set_file(path.string()) || lower_extension(path.string()) == ".json";
 }
 
 DirectoryListing list_directory(const std::filesystem::path& folder) {

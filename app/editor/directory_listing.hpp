@@ -1,6 +1,7 @@
 #pragma once
 // What the editor's file browser shows of a folder: its sub-folders, then the
-// files the editor opens (.ply, .xyz, .json), each group sorted by name;
+// files the editor opens (point sets: .ply, .off, .xyz, .pwn, .csv, .txt; scenes:
+// .json), each group sorted by name;
 // hidden entries left out. No GL.
 #include <filesystem>
 #include <string>

@@ -7,6 +7,7 @@
 
 #include "app/editor/scene_start.hpp"
 #include "core/surface/metrics.hpp"
+#include "core/io/file_format.hpp"
 #include "core/io/point_set_io.hpp"
 
 namespace amls::editor {
@@ -98,10 +99,7 @@ InitialShape load_point_set_file(const std::string& path) {
 }
 
 InitialShape load_initial_shape(const std::string& path, int threads) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".json") return load_scene_start(path, threads);
+  if (lower_extension(path) == ".json") return load_scene_start(path, threads);
   return load_point_set_file(path);
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/io/file_format.hpp"
 #include "core/io/raw_point_file.hpp"
 
 namespace amls {
@@ -20,19 +21,19 @@ using detail::fail;
 
 constexpr std::size_t kMaxLine = std::size_t{1} << 20;
 
-std::string lower_extension(const std::string& path) {
-  std::string extension = fs::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
 std::ifstream open_binary(const std::string& path) {
   std::error_code error;
   if (fs::is_directory(path, error)) fail(path, "is a directory, not a mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
   return in;
+}
+
+std::uint64_t file_size(const std::string& path) {
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error) fail(path, "cannot tell its size: " + error.message());
+  return size;
 }
 
 TriangleMesh read_obj(std::istream& in, const std::string& path) {
@@ -61,7 +62,8 @@ TriangleMesh read_obj(std::istream& in, const std::string& path) {
       for (std::size_t k = 1; k < words.size(); ++k) {
         const std::string_view corner = words[k].substr(0, words[k].find('/'));
         const std::optional<std::int64_t> index = detail::parse_integer(corner);
-        if (!index || *index == 0) fail_here(detail::quoted(words[k]) + " is not a vertex index (1-based, or negative)");
+        if (!index || *index == 0)
+          fail_here(detail::quoted(words[k]) + " is not a vertex index (1-based, or negative)");
         const auto count = static_cast<std::int64_t>(mesh.vertices.size());
         const std::int64_t resolved = *index > 0 ? *index - 1 : count + *index;
         if (resolved < 0 || resolved >= count)
@@ -78,37 +80,31 @@ TriangleMesh read_obj(std::istream& in, const std::string& path) {
 }  // namespace
 
 TriangleMesh read_mesh(const std::string& path) {
-  const std::string extension = lower_extension(path);
-  if (extension != ".obj" && extension != ".ply")
-    throw std::invalid_argument(path + ": unknown mesh file extension '" + extension + "' (expected .obj or .ply)");
+  const std::optional<ShapeFileFormat> format = shape_file_format(path);
+  if (!format || *format == ShapeFileFormat::xyz)
+    throw std::invalid_argument(path + ": unknown mesh file extension '" + lower_extension(path) +
+                                "' (expected .obj, .ply or .off)");
   std::ifstream in = open_binary(path);
-  if (extension == ".obj") return read_obj(in, path);
-  std::error_code error;
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error) fail(path, "cannot tell its size: " + error.message());
-  detail::RawPointFile raw = detail::read_ply(in, size, path);
+  if (*format == ShapeFileFormat::obj) return read_obj(in, path);
+  const std::uint64_t size = file_size(path);
+  detail::RawPointFile raw =
+      *format == ShapeFileFormat::ply ? detail::read_ply(in, size, path) : detail::read_off(in, size, path);
   if (!raw.face_problem.empty()) fail(path, raw.face_problem);
   TriangleMesh mesh;
   mesh.vertices = std::move(raw.points.positions);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    if (!mesh.vertices[i].allFinite()) fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    if (!mesh.vertices[i].allFinite()) fail(path, raw.where(i) + ": a vertex with a non-finite coordinate");
   mesh.triangles = std::move(raw.triangles);
   return mesh;
 }
 
 bool is_mesh_file(const std::string& path) {
-  const std::string extension = lower_extension(path);
-  if (extension == ".obj") return true;
-  if (extension != ".ply") return false;
+  const std::optional<ShapeFileFormat> format = shape_file_format(path);
+  if (!format || *format == ShapeFileFormat::xyz) return false;
+  if (*format == ShapeFileFormat::obj) return true;
   std::ifstream in = open_binary(path);
-  std::string line;
-  for (std::size_t number = 1; detail::read_line(in, line, 1 << 16, path, number); ++number) {
-    std::vector<std::string_view> words;
-    detail::split_words(line, words);
-    if (words.size() >= 2 && words[0] == "element" && words[1] == "face") return true;
-    if (!words.empty() && words[0] == "end_header") return false;
-  }
-  return false;
+  return *format == ShapeFileFormat::ply ? detail::ply_face_count(in, path) > 0
+                                         : detail::off_face_count(in, file_size(path), path) > 0;
 }
 
 }  // namespace amls

@@ -1,5 +1,5 @@
 #pragma once
-// Triangle meshes from files, as input shapes: OBJ and PLY.
+// Triangle meshes from files, as input shapes: OBJ, PLY and OFF.
 //
 // - OBJ: `v x y z` vertices and `f` faces whose corners are `i`, `i/t`,
 //   `i//n` or `i/t/n` (only i is used); indices start at 1, and negative ones
@@ -8,6 +8,8 @@
 //   `#` starts a comment.
 // - PLY: the vertex element's x y z and the `face` element's `vertex_indices`
 //   (or `vertex_index`) list, ASCII or binary (see point_set_io.hpp).
+// - OFF: the vertices' x y z and the faces' 0-based vertex indices (see
+//   core/io/off_format.cpp); polygons are fan-triangulated.
 // Errors throw std::runtime_error naming the file and the line or face.
 #include <array>
 #include <cstdint>
@@ -23,12 +25,13 @@ struct TriangleMesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
 };
 
-// Reads `.obj` or `.ply` (by extension). A PLY without a face element gives a
-// mesh with no triangles (its vertices only); an OBJ without faces likewise.
+// Reads `.obj`, `.ply` or `.off` (by extension, in any case). A file without
+// faces gives a mesh with no triangles (its vertices only).
 TriangleMesh read_mesh(const std::string& path);
 
 // Whether `path` names a file that read_mesh reads as a mesh with faces: an
-// `.obj`, or a `.ply` whose header declares a face element.
+// `.obj`, or a `.ply` or `.off` whose header declares one or more faces (a
+// PLY's `element face 0`, as MeshLab saves point clouds, is a point set).
 bool is_mesh_file(const std::string& path);
 
 }  // namespace amls

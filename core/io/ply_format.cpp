@@ -141,24 +141,6 @@ struct VertexLayout {
   std::size_t face_property = kNone;  // its `vertex_indices` (or `vertex_index`) list
 };
 
-// One face's vertex indices, fan-triangulated into raw.triangles. A face that
-// cannot be used is skipped and the first such is noted in raw.face_problem:
-// only a mesh reader needs the faces, so only it fails on them.
-void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::uint64_t face) {
-  ++raw.faces;
-  auto problem = [&](const std::string& what) {
-    if (raw.face_problem.empty()) raw.face_problem = "face " + std::to_string(face) + ": " + what;
-  };
-  if (indices.size() < 3)
-    return problem("has " + std::to_string(indices.size()) + " vertices (a face needs at least 3)");
-  for (double index : indices)
-    if (index < 0.0 || index >= static_cast<double>(vertex_count))
-      return problem("vertex index " + std::to_string(static_cast<std::int64_t>(index)) +
-                     " is out of range (the file has " + std::to_string(vertex_count) + " vertices)");
-  auto at = [&](std::size_t k) { return static_cast<std::uint32_t>(indices[k]); };
-  for (std::size_t k = 1; k + 1 < indices.size(); ++k) raw.triangles.push_back({at(0), at(k), at(k + 1)});
-}
-
 Header read_header(std::istream& in, const std::string& path) {
   Header header;
   std::string line;
@@ -302,8 +284,9 @@ VertexLayout vertex_layout(const Header& header, const std::string& path) {
       const Property& p = properties[k];
       if (p.name != "vertex_indices" && p.name != "vertex_index") continue;
       if (!p.is_list) fail(path, "face property '" + p.name + "' is not a list");
-      if (!is_integer(p.type)) fail(path, "face property '" + p.name + "' holds " + std::string(name_of(p.type)) +
-                                              " values; vertex indices must be integers");
+      if (!is_integer(p.type))
+        fail(path, "face property '" + p.name + "' holds " + std::string(name_of(p.type)) +
+                       " values; vertex indices must be integers");
       layout.face_element = e;
       layout.face_property = k;
     }
@@ -400,7 +383,7 @@ void read_ascii_body(std::istream& in, std::uint64_t bytes_left, Header& header,
                       "'");
           if (is_face_list) face.push_back(*value);
         }
-        if (is_face_list) add_face(raw, face, layout.vertex_count, item);
+        if (is_face_list) add_face(raw, face, layout.vertex_count, "face", item);
       }
       if (w != words.size())
         fail_here(std::to_string(words.size() - w) + " values too many for a '" + element.name + "' item");
@@ -521,7 +504,7 @@ class BinaryBody {
         face_.clear();
         for (std::size_t j = 0; j < static_cast<std::size_t>(length); ++j)
           face_.push_back(decode(buffer_.data() + j * size, p.type, swap_));
-        add_face(raw, face_, vertex_count_, item);
+        add_face(raw, face_, vertex_count_, "face", item);
         continue;
       }
       // length < 2^32 and an item is at most 8 bytes: no overflow.
@@ -594,6 +577,12 @@ RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::stri
     raw.warnings.push_back(path + ": " + std::to_string(body.bytes_left()) +
                            " bytes after the last element were ignored");
   return raw;
+}
+
+std::uint64_t ply_face_count(std::istream& in, const std::string& path) {
+  const Header header = read_header(in, path);
+  const VertexLayout layout = vertex_layout(header, path);
+  return layout.face_element == kNone ? 0 : header.elements[layout.face_element].count;
 }
 
 void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, PointFileFormat format) {

@@ -1,7 +1,6 @@
 #include "core/io/point_set_io.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -12,6 +11,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/io/file_format.hpp"
+#include "core/io/point_set_repair.hpp"
 #include "core/io/raw_point_file.hpp"
 
 namespace amls {
@@ -21,66 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using detail::fail;
 using detail::RawPointFile;
-
-// Normals this close to unit length are kept as they are, bit for bit, so that
-// a set written and read back is the same set; others are normalised.
-constexpr double kUnitTolerance = 1e-12;
-// Normals off by more than this were not meant to be unit (float storage is
-// off by about 1e-7): worth a warning.
-constexpr double kNormaliseWarning = 1e-4;
-
-std::string short_number(double value) {
-  std::string text;
-  detail::append_double(text, value);
-  return text;
-}
-
-// Zero normals, non-finite values, normalisation.
-void check_normals(RawPointFile& raw) {
-  const std::size_t n = raw.points.size();
-  for (std::size_t i = 0; i < n; ++i)
-    if (!raw.points.positions[i].allFinite())
-      fail(raw.path, raw.where(i) + ": non-finite coordinate (" + short_number(raw.points.positions[i].x()) + " " +
-                         short_number(raw.points.positions[i].y()) + " " + short_number(raw.points.positions[i].z()) +
-                         ")");
-  if (!raw.has_normals) return;
-  std::size_t zero = 0, first_zero = 0, first_nonzero = n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec<3>& normal = raw.points.normals[i];
-    if (!normal.allFinite())
-      fail(raw.path, raw.where(i) + ": non-finite normal (" + short_number(normal.x()) + " " +
-                         short_number(normal.y()) + " " + short_number(normal.z()) + ")");
-    if (!normal.isZero(0.0)) {
-      first_nonzero = std::min(first_nonzero, i);
-    } else if (zero++ == 0) {
-      first_zero = i;
-    }
-  }
-  if (n > 0 && zero == n) {
-    raw.has_normals = false;
-    raw.warnings.push_back(raw.path + ": every normal is zero; read as a point set without normals");
-    return;
-  }
-  if (zero > 0)
-    fail(raw.path, raw.where(first_zero) + ": zero-length normal (" + std::to_string(zero) +
-                       " points have one, while " + raw.where(first_nonzero) + " has a normal)");
-  std::size_t normalised = 0;
-  double worst = 0.0;
-  for (Vec<3>& normal : raw.points.normals) {
-    const double length = normal.norm();
-    if (std::abs(length - 1.0) <= kUnitTolerance) continue;
-    // A normal whose squared length overflows has a finite, non-zero norm from
-    // Eigen's stableNorm; plain norm() would give inf.
-    const double stable = std::isfinite(length) && length > 0.0 ? length : normal.stableNorm();
-    normal /= stable;
-    worst = std::max(worst, std::abs(stable - 1.0));
-    ++normalised;
-  }
-  if (worst > kNormaliseWarning)
-    raw.warnings.push_back(raw.path + ": " + std::to_string(normalised) +
-                           " normals were not of unit length and were normalised (the farthest had length off by " +
-                           short_number(worst) + ")");
-}
+using detail::shortest;
 
 // The first point (if any) that does not lie in the plane z = 0 with its normal in it.
 std::optional<std::size_t> first_off_plane(const PointSet<3>& points) {
@@ -96,8 +38,8 @@ int decide_dimension(RawPointFile& raw, int dimension_override) {
     const std::size_t i = *off_plane;
     const std::string why =
         dimension_override != 0 ? "the dimension is forced to 2 (--dim 2)" : "the file says it holds a 2D set";
-    fail(raw.path, raw.where(i) + ": z = " + short_number(raw.points.positions[i].z()) + ", nz = " +
-                       short_number(raw.points.normals[i].z()) + ", but " + why + ", which needs z = 0 and nz = 0");
+    fail(raw.path, raw.where(i) + ": z = " + shortest(raw.points.positions[i].z()) + ", nz = " +
+                       shortest(raw.points.normals[i].z()) + ", but " + why + ", which needs z = 0 and nz = 0");
   }
   if (dimension != 0) return dimension;
   if (raw.points.empty() || off_plane) return 3;
@@ -190,9 +132,7 @@ const char* to_string(PointFileFormat format) {
 }
 
 PointFileFormat format_from_extension(const std::string& path) {
-  std::string extension = fs::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lower_extension(path);
   if (extension == ".ply") return PointFileFormat::ply_binary_little_endian;
   if (extension == ".xyz") return PointFileFormat::xyz;
   if (extension.empty()) throw std::invalid_argument(path + ": no file extension (expected .ply or .xyz)");
@@ -203,7 +143,14 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
   if (dimension_override != 0 && dimension_override != 2 && dimension_override != 3)
     throw std::invalid_argument("dimension must be 2 or 3 (or 0 to read it from the file), got " +
                                 std::to_string(dimension_override));
-  const PointFileFormat format = format_from_extension(path);
+  const std::optional<ShapeFileFormat> format = shape_file_format(path);
+  if (!format || *format == ShapeFileFormat::obj) {
+    const std::string extension = lower_extension(path);
+    throw std::invalid_argument(path + ": " +
+                                (extension.empty() ? std::string("no file extension")
+                                                   : "unknown point-set file extension '" + extension + "'") +
+                                " (expected " + kPointSetFileExtensions + ")");
+  }
   std::error_code error;
   if (fs::is_directory(path, error)) fail(path, "is a directory, not a point-set file");
   std::ifstream in(path, std::ios::binary);
@@ -211,10 +158,13 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) fail(path, "cannot tell its size: " + error.message());
   if (size == 0) fail(path, "the file is empty");
-  RawPointFile raw = format == PointFileFormat::xyz ? detail::read_xyz(in, path) : detail::read_ply(in, size, path);
-  check_normals(raw);
+  RawPointFile raw = *format == ShapeFileFormat::xyz   ? detail::read_xyz(in, path)
+                     : *format == ShapeFileFormat::off ? detail::read_off(in, size, path)
+                                                       : detail::read_ply(in, size, path);
+  std::vector<std::uint8_t> unusable_normals = detail::prepare_points(raw);
   LoadedPointSet loaded;
   loaded.dimension = decide_dimension(raw, dimension_override);
+  detail::repair_points(raw, loaded.dimension, std::move(unusable_normals));
   loaded.has_normals = raw.has_normals;
   loaded.points = std::move(raw.points);
   if (!loaded.has_normals) std::fill(loaded.points.normals.begin(), loaded.points.normals.end(), Vec<3>::Zero());
@@ -225,8 +175,8 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
 PointSet<2> to_2d(const PointSet<3>& points) {
   if (const std::optional<std::size_t> i = first_off_plane(points))
     throw std::invalid_argument("point " + std::to_string(*i) +
-                                " is not a 2D point: z = " + short_number(points.positions[*i].z()) +
-                                (*i < points.normals.size() ? ", nz = " + short_number(points.normals[*i].z()) : ""));
+                                " is not a 2D point: z = " + shortest(points.positions[*i].z()) +
+                                (*i < points.normals.size() ? ", nz = " + shortest(points.normals[*i].z()) : ""));
   PointSet<2> out;
   out.positions.reserve(points.size());
   for (const Vec<3>& p : points.positions) out.positions.emplace_back(p.x(), p.y());

@@ -1,28 +1,38 @@
 #pragma once
-// Point-set files: PLY (ASCII, binary little and big endian) and XYZ, read and
-// written in 2D and 3D.
+// Point-set files, read and written in 2D and 3D. Read: PLY (ASCII, binary
+// little and big endian), OFF, and text columns (.xyz, .pwn, .csv, .txt);
+// written: PLY and XYZ. The extension picks the format (core/io/file_format.hpp).
 //
 // Reading
 // - PLY: the `vertex` element's `x y z` and, if present, `nx ny nz` or
-//   `normal_x normal_y normal_z`, of any PLY scalar type. Other properties and
-//   other elements (faces, colours, lists) are read past and ignored. In ASCII,
-//   one item per line; blank lines are skipped.
-// - XYZ: one point per line, `x y z` or `x y z nx ny nz`; a 2D set may also be
-//   written `x y` or `x y nx ny` (all lines alike). `#` starts a comment line.
+//   `normal_x normal_y normal_z`, of any PLY scalar type. Other properties
+//   (colours, scalars, lists) and other elements (faces, even `element face 0`,
+//   edges, materials) are read past and ignored. In ASCII, one item per line;
+//   blank lines are skipped.
+// - OFF: the vertices, with normals from NOFF; faces and colours are read past
+//   (core/io/off_format.cpp).
+// - Text columns: one point per line, separated by spaces, tabs, commas or
+//   semicolons, with an optional header line naming the columns; without one,
+//   `x y z` or `x y z nx ny nz`, and for a 2D set `x y` or `x y nx ny`.
+//   `#` starts a comment line (core/io/xyz_format.cpp).
 // - CRLF line ends are accepted everywhere.
 // - The dimension is, in order: `dimension_override` if it is 2 or 3; else the
 //   file's `amls dim N` comment (`comment amls dim 2` in PLY, `# amls dim 2` in
-//   XYZ) or, in XYZ, 2 or 4 columns; else 2 if every z (and every nz) is 0,
-//   with a warning; else 3. A set read as 2D must have z = 0 and nz = 0.
+//   text) or, in text, columns without z; else 2 if every z (and every nz) is
+//   0, with a warning; else 3. A set read as 2D must have z = 0 and nz = 0.
 // - Normals of length 1 within 1e-12 are kept bit for bit (so that round trips
 //   are exact); others are normalised (a warning says so when some were off by
-//   more than 1e-4, i.e. were not unit normals stored in float). A file whose
-//   normals are all zero is read as a file without normals, with a warning; a
-//   zero normal among non-zero ones is an error, since a surface needs every
-//   point oriented.
-// - Errors throw std::runtime_error naming the file and, where it helps, the
-//   line or the vertex. Header counts are checked against the file's size
-//   before anything is allocated.
+//   more than 1e-4, i.e. were not unit normals stored in float).
+// - Small defects are repaired, each kind with a warning that counts them and
+//   names the first (core/io/point_set_repair.hpp): points with a non-finite
+//   coordinate are dropped, points at exactly an earlier point's position are
+//   merged into it, and zero or non-finite normals among others are estimated
+//   from the neighbours. A file whose normals are all zero (or non-finite) is
+//   read as a file without normals, with a warning.
+// - Broken files throw std::runtime_error naming the file and the line (text)
+//   or the vertex (binary): unparsable numbers, wrong column or value counts,
+//   truncation, data after the last element. Header counts are checked against
+//   the file's size before anything is allocated.
 //
 // Writing
 // - PLY with `double` properties, XYZ and ASCII PLY with the shortest decimal
@@ -46,8 +56,9 @@ enum class PointFileFormat { ply_ascii, ply_binary_little_endian, ply_binary_big
 
 const char* to_string(PointFileFormat format);
 
-// `.ply` -> binary little endian (the compact, exact choice), `.xyz` -> xyz; the
-// extension's case does not matter. Throws std::invalid_argument otherwise.
+// For writing: `.ply` -> binary little endian (the compact, exact choice),
+// `.xyz` -> xyz; the extension's case does not matter. Throws
+// std::invalid_argument otherwise.
 PointFileFormat format_from_extension(const std::string& path);
 
 // A point set as read from a file. Both dimensions are held in 3D: a 2D set
@@ -62,7 +73,8 @@ struct LoadedPointSet {
 };
 
 // dimension_override: 0 decides from the file, 2 or 3 forces the dimension.
-// The format is chosen by the extension (any PLY encoding is read from `.ply`).
+// The format is chosen by the extension (any PLY encoding is read from `.ply`);
+// others, `.obj` included, throw std::invalid_argument.
 LoadedPointSet read_point_set(const std::string& path, int dimension_override = 0);
 
 // Throws std::invalid_argument naming the first point with z != 0 or nz != 0.

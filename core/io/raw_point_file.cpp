@@ -9,7 +9,23 @@ namespace amls::detail {
 
 std::string RawPointFile::where(std::size_t i) const {
   if (i < lines.size()) return "line " + std::to_string(lines[i]);
-  return "vertex " + std::to_string(i);
+  return "vertex " + std::to_string(i < vertices.size() ? vertices[i] : i);
+}
+
+void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::string_view where,
+              std::uint64_t number) {
+  ++raw.faces;
+  auto problem = [&](const std::string& what) {
+    if (raw.face_problem.empty()) raw.face_problem = std::string(where) + " " + std::to_string(number) + ": " + what;
+  };
+  if (indices.size() < 3)
+    return problem("has " + std::to_string(indices.size()) + " vertices (a face needs at least 3)");
+  for (double index : indices)
+    if (index < 0.0 || index >= static_cast<double>(vertex_count))
+      return problem("vertex index " + std::to_string(static_cast<std::int64_t>(index)) +
+                     " is out of range (the file has " + std::to_string(vertex_count) + " vertices)");
+  auto at = [&](std::size_t k) { return static_cast<std::uint32_t>(indices[k]); };
+  for (std::size_t k = 1; k + 1 < indices.size(); ++k) raw.triangles.push_back({at(0), at(k), at(k + 1)});
 }
 
 void fail(const std::string& path, const std::string& what) { throw std::runtime_error(path + ": " + what); }
@@ -32,6 +48,10 @@ bool read_line(std::istream& in, std::string& line, std::size_t max_length, cons
   }
   if (!line.empty() && line.back() == '\r') line.pop_back();
   return any;
+}
+
+void drop_byte_order_mark(std::string& first_line) {
+  if (first_line.starts_with("\xEF\xBB\xBF")) first_line.erase(0, 3);
 }
 
 std::string quoted(std::string_view text) {
@@ -93,6 +113,12 @@ void append_double(std::string& out, double value) {
   const auto [end, error] = std::to_chars(text, text + sizeof text, value);
   if (error != std::errc()) throw std::logic_error("to_chars failed on a double");  // 32 characters always suffice
   out.append(text, end);
+}
+
+std::string shortest(double value) {
+  std::string text;
+  append_double(text, value);
+  return text;
 }
 
 void FileSink::write(std::string_view bytes) {

@@ -29,6 +29,9 @@ struct RawPointFile {
   int declared_dimension = 0;
   // For text formats, the line each point came from, so that messages can name it.
   std::vector<std::size_t> lines;
+  // For binary files once points were dropped or merged, each point's vertex
+  // index in the file (empty while they are all there, in order).
+  std::vector<std::size_t> vertices;
   std::vector<std::string> warnings;
   // PLY: the face element's polygons, fan-triangulated (indices checked against the vertex count).
   bool has_faces = false;
@@ -40,6 +43,13 @@ struct RawPointFile {
   std::string where(std::size_t i) const;
 };
 
+// One face's vertex indices, fan-triangulated into raw.triangles and counted
+// in raw.faces. A face that cannot be used is skipped, and the first such is
+// noted in raw.face_problem as "`where` `number`: what is wrong": only a mesh
+// reader needs the faces, so only it fails on them.
+void add_face(RawPointFile& raw, const std::vector<double>& indices, std::uint64_t vertex_count, std::string_view where,
+              std::uint64_t number);
+
 // Throws std::runtime_error("path: what").
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 
@@ -48,6 +58,10 @@ struct RawPointFile {
 // than `max_length` (so that a binary file read as text cannot fill memory).
 bool read_line(std::istream& in, std::string& line, std::size_t max_length, const std::string& path,
                std::size_t line_number);
+
+// Drops a UTF-8 byte order mark from the start of a file's first line, as
+// some Windows programs write one.
+void drop_byte_order_mark(std::string& first_line);
 
 // 'text', in quotes, for messages.
 std::string quoted(std::string_view text);
@@ -66,6 +80,8 @@ int parse_dimension_comment(std::span<const std::string_view> words, const std::
 
 // Appends the shortest decimal that reads back as exactly `value`.
 void append_double(std::string& out, double value);
+// The same, as a string.
+std::string shortest(double value);
 
 // Buffered output to a file that throws, naming `path`, when a write fails.
 class FileSink {
@@ -87,6 +103,11 @@ void write_through_temporary(const std::string& path, const std::function<void(F
 // Read the rest of `in` (whose first `file_size` bytes are the file).
 RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::string& path);
 RawPointFile read_xyz(std::istream& in, const std::string& path);
+RawPointFile read_off(std::istream& in, std::uint64_t file_size, const std::string& path);
+
+// The face count a file's header declares (0 without faces), reading the header only.
+std::uint64_t ply_face_count(std::istream& in, const std::string& path);
+std::uint64_t off_face_count(std::istream& in, std::uint64_t file_size, const std::string& path);
 
 // `points` holds a 2D set as z = 0; `with_normals` says whether to write normals.
 void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, PointFileFormat format);

@@ -1,9 +1,9 @@
 #pragma once
-// An input shape from a file, as oriented samples: a point set with
-// normals (PLY, XYZ) as it is; a point set without normals with normals
-// estimated (core/surface/normal_estimation.hpp); a triangle mesh (OBJ, or PLY with
-// faces) sampled at about the given spacing with face normals
-// (core/io/mesh_sampling.hpp). `amls resample` and scenes read shapes through this.
+// An input shape from a file, as oriented samples: a point set with normals
+// (PLY, OFF, text columns; core/io/point_set_io.hpp) as it is; a point set
+// without normals with normals estimated (core/surface/normal_estimation.hpp);
+// a triangle mesh (OBJ, or PLY or OFF with faces) sampled at about the given
+// spacing with face normals (core/io/mesh_sampling.hpp). `amls resample` and scenes read shapes through this.
 #include <string>
 #include <vector>
 

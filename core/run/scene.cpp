@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io/file_format.hpp"
 #include "core/io/point_set_io.hpp"
 
 namespace amls {
@@ -215,11 +216,8 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
       shape.resolved_file = (fs::path(shape.file).is_absolute() ? fs::path(shape.file) : base / shape.file)
                                 .lexically_normal()
                                 .string();
-      std::string extension = fs::path(shape.file).extension().string();
-      std::transform(extension.begin(), extension.end(), extension.begin(),
-                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      if (extension != ".ply" && extension != ".xyz" && extension != ".obj")
-        path_at.fail("unknown file type '" + extension + "' (expected .ply, .xyz or .obj)");
+      if (!shape_file_format(shape.file))
+        path_at.fail("unknown file type '" + lower_extension(shape.file) + "' (expected " + kShapeFileExtensions + ")");
       std::error_code error;
       if (!fs::is_regular_file(shape.resolved_file, error))
         path_at.fail("no such file: " + shape.resolved_file + " (paths are relative to the scene file)");
