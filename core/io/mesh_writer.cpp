@@ -1,13 +1,11 @@
 #include "core/io/mesh_writer.hpp"
 
-#include <algorithm>
 #include <bit>
-#include <cctype>
 #include <cstdint>
-#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
+#include "core/io/file_format.hpp"
 #include "core/io/raw_point_file.hpp"
 
 namespace amls {
@@ -124,9 +122,7 @@ void write_mesh(const std::string& path, const SurfaceMesh<D>& mesh) {
 }  // namespace
 
 MeshFileFormat mesh_format_from_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lower_extension(path);
   if (extension == ".obj") return MeshFileFormat::obj;
   if (extension == ".ply") return MeshFileFormat::ply;
   if (extension.empty()) throw std::invalid_argument(path + ": no file extension (expected .obj or .ply for a mesh)");
