@@ -173,11 +173,8 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
                         "D), h = " + format_number(picture.h) + (options.spacing > 0.0 ? "" : " (estimated)");
   if (options.curve && picture.dimension == 2) {
     const PointSet<2> flat = to_2d(picture.points);
-    PointSetResampling grid_options;
-    grid_options.spacing = picture.h;
-    grid_options.radius_factor = options.radius_factor;
-    picture.curve =
-        mls_curve(flat, resampling_grid(flat, grid_options), AmlsParameters{options.radius_factor}, options.threads);
+    picture.curve = mls_curve(flat, resampling_grid(flat, picture.h, options.radius_factor),
+                              AmlsParameters{options.radius_factor}, options.threads);
   }
   return picture;
 }
