@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/geometry/sample_spacing.hpp"
+#include "core/util/process_memory.hpp"
 
 namespace amls {
 
@@ -86,18 +87,23 @@ double sampled_extent(const std::vector<Vec<D>>& positions) {
 
 ResamplingCost check_resampling_cost(int dimension, double extent, double h, const PointSetResampling& options) {
   ResamplingCost cost;
+  const double memory = options.memory_mib > 0.0 ? options.memory_mib : 0.5 * physical_memory_mib();
+  cost.limit = options.most_points;
+  if (memory > 0.0) cost.limit = std::min(cost.limit, memory / kMiBPerResampledPoint);
   if (dimension == 2) {
     cost.points = kPointsPerCell2 * extent / h;
-    cost.fitting_spacing = kPointsPerCell2 * extent / options.most_points;
+    cost.fitting_spacing = kPointsPerCell2 * extent / cost.limit;
   } else {
     cost.points = kPointsPerCell3 * extent / (h * h);
-    cost.fitting_spacing = std::sqrt(kPointsPerCell3 * extent / options.most_points);
+    cost.fitting_spacing = std::sqrt(kPointsPerCell3 * extent / cost.limit);
   }
-  if (cost.points > options.most_points)
-    throw std::invalid_argument("h = " + number(h) + " would give about " + number(cost.points) +
-                                " points (the input samples a " + (dimension == 2 ? "curve of length " : "surface of area ") +
-                                number(extent) + "), more than the limit of " + number(options.most_points) +
-                                "; --spacing " + number(cost.fitting_spacing * 1.01) + " or larger would fit");
+  if (cost.points > cost.limit)
+    throw std::invalid_argument(
+        "h = " + number(h) + " would give about " + number(cost.points) + " points (the input samples a " +
+        (dimension == 2 ? "curve of length " : "surface of area ") + number(extent) + "), more than the limit of " +
+        number(cost.limit) + " (" + number(options.most_points) + " points, and " + number(memory / 1024.0) +
+        " GiB of memory at about 2 KiB a point); --spacing " + number(cost.fitting_spacing * 1.01) +
+        " or larger would fit");
   return cost;
 }
 

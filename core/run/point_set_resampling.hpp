@@ -13,8 +13,12 @@
 namespace amls {
 
 // Past this many estimated output points a resampling is refused before any
-// grid is built (at about 1 KiB of grid state per point, ~50 GiB).
+// grid is built, and past the points whose memory passes half the machine's.
 inline constexpr double kMostResampledPoints = 50e6;
+// Peak memory per output point: 1.4 KiB for a point set (building.ply,
+// 100,000 points in, 326,234 out, 440 MiB), up to 4 KiB for a mesh, whose
+// samples count too (armadillo: 207,074 samples, 66,187 out, 263 MiB).
+inline constexpr double kMiBPerResampledPoint = 2.0 / 1024.0;
 
 struct PointSetResampling {
   // h, by the first that is set:
@@ -24,7 +28,8 @@ struct PointSetResampling {
   double radius_factor = 3.0;
   Variant variant = Variant::exact;
   int threads = 1;
-  double most_points = kMostResampledPoints;  // the cost limit (estimate_resampling_cost)
+  double most_points = kMostResampledPoints;  // the cost limits (check_resampling_cost)
+  double memory_mib = 0.0;                    // memory it may take; 0: half the machine's
 };
 
 // The h a resampling uses and why, for the user.
@@ -47,11 +52,12 @@ double sampled_extent(const std::vector<Vec<D>>& positions);
 // What a resampling at h of a surface of the given area (3D) or length (2D)
 // will produce, estimated before any grid is built.
 struct ResamplingCost {
-  double points = 0.0;         // output points, about 1.5 per h^2 of area (h of length in 2D)
+  double points = 0.0;           // output points, about 1.5 per h^2 of area (4/pi per h of length in 2D)
+  double limit = 0.0;            // the most points allowed: most_points, or fewer to fit memory_mib
   double fitting_spacing = 0.0;  // the smallest h whose estimate stays within the limit
 };
-// Throws std::invalid_argument when the estimate passes options.most_points,
-// naming the estimate and the --spacing that would fit.
+// Throws std::invalid_argument when the estimate passes the limit, naming the
+// estimate, the limit and the --spacing that would fit.
 ResamplingCost check_resampling_cost(int dimension, double extent, double h, const PointSetResampling& options);
 
 template <int D>
