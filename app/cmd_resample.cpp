@@ -77,8 +77,8 @@ double spacing_for(const std::vector<Vec<3>>& positions3, const ResampleOptions&
 }
 
 template <int D>
-void resample_and_write(const PointSet<D>& input, const ResampleOptions& options, PointFileFormat format,
-                        Stopwatch& clock) {
+void resample_and_write(const PointSet<D>& input, std::size_t file_points, const ResampleOptions& options,
+                        PointFileFormat format, Stopwatch& clock) {
   const ResampledPointSet<D> result = resample_point_set(input, options.resampling);
   if (result.points.empty())
     throw std::runtime_error(
@@ -104,7 +104,8 @@ void resample_and_write(const PointSet<D>& input, const ResampleOptions& options
     j["variant"] = to_string(options.resampling.variant);
     j["h"] = result.grid.spacing();
     j["radius_factor"] = options.resampling.radius_factor;
-    j["points_in"] = input.size();
+    j["file_points"] = file_points;  // a mesh's vertices
+    j["points_in"] = input.size();    // a mesh's samples
     j["points_out"] = result.points.size();
     j["spacing_h"] = {{"min", result.spacing_h.min}, {"median", result.spacing_h.median}, {"max", result.spacing_h.max}};
     j["coverage"] = {{"reach", kCoverageReach},
@@ -180,9 +181,9 @@ void add_resample_command(CLI::App& app) {
     for (const std::string& warning : loaded.warnings) std::cerr << "amls: warning: " << warning << "\n";
     std::cout << options->input << ": " << loaded.source << "\n";
     if (loaded.dimension == 2) {
-      resample_and_write(to_2d(loaded.points), *options, format, clock);
+      resample_and_write(to_2d(loaded.points), raw.positions.size(), *options, format, clock);
     } else {
-      resample_and_write(loaded.points, *options, format, clock);
+      resample_and_write(loaded.points, raw.positions.size(), *options, format, clock);
     }
   });
 }
