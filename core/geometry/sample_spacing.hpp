@@ -7,8 +7,9 @@
 // divided by kSpacingNeighbourDivisor. The kth neighbour rather than the first
 // because scans are often dense along their scan lines and sparse across them:
 // the nearest neighbour then sees only the dense direction. The median makes h
-// independent of outliers and duplicates; sparse regions are handled by the
-// surface's locally widened support (AmlsParameters), not by h.
+// independent of outliers and duplicates. Regions much sparser than the median
+// may still open holes: one global h cannot close them without losing the
+// dense regions' detail (docs/real-data.md, the radar scan).
 #include <cstddef>
 #include <string>
 #include <vector>
