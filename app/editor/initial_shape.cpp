@@ -7,6 +7,7 @@
 
 #include "app/editor/scene_start.hpp"
 #include "core/geometry/sample_spacing.hpp"
+#include "core/run/point_set_resampling.hpp"
 #include "core/io/point_set_io.hpp"
 
 namespace amls::editor {
@@ -61,6 +62,18 @@ double spacing_of(const PointSet<D>& points, const std::string& path) {
   }
 }
 
+// One resampling at the shape's h, as `amls resample` would do it, and its coverage of the points.
+template <int D>
+void measure_coverage_of(InitialShape& shape, const PointSet<D>& points) {
+  PointSetResampling options;
+  options.spacing = shape.settings.spacing;
+  options.radius_factor = shape.settings.radius_factor;
+  const Coverage c = resample_point_set(points, options).coverage;
+  shape.coverage = "resampled at h: " + c.summary();
+  shape.coverage_loss = c.clear_loss();
+  if (shape.coverage_loss) shape.coverage = shape.name + ": " + c.loss_message();
+}
+
 }  // namespace
 
 InitialShape make_circle(double radius, std::size_t points, double spacing) {
@@ -89,6 +102,14 @@ InitialShape load_point_set_file(const std::string& path) {
   shape.points = std::move(loaded.points);
   shape.name = std::filesystem::path(path).filename().string();
   shape.warnings = std::move(loaded.warnings);
+  try {
+    if (loaded.dimension == 2)
+      measure_coverage_of(shape, to_2d(shape.points));
+    else
+      measure_coverage_of(shape, shape.points);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
   return shape;
 }
 
