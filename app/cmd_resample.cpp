@@ -7,9 +7,9 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/flow_report.hpp"
+#include "core/geometry/sample_spacing.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
-#include "core/geometry/sample_spacing.hpp"
 #include "core/io/surface_samples.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/util/process_memory.hpp"
@@ -105,9 +105,10 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
     j["h"] = result.grid.spacing();
     j["radius_factor"] = options.resampling.radius_factor;
     j["file_points"] = file_points;  // a mesh's vertices
-    j["points_in"] = input.size();    // a mesh's samples
+    j["points_in"] = input.size();   // a mesh's samples
     j["points_out"] = result.points.size();
-    j["spacing_h"] = {{"min", result.spacing_h.min}, {"median", result.spacing_h.median}, {"max", result.spacing_h.max}};
+    j["spacing_h"] = {
+        {"min", result.spacing_h.min}, {"median", result.spacing_h.median}, {"max", result.spacing_h.max}};
     j["coverage"] = {{"reach", kCoverageReach},
                      {"input_covered", c.input_fraction()},
                      {"output_on_input", c.output_fraction()},
@@ -169,7 +170,8 @@ void add_resample_command(CLI::App& app) {
     const PointFileFormat format = format_from_extension(options->output);
     // h first, from the raw input: meshes are sampled at h, and normals are estimated over Delta.
     const InputPositions raw = input_positions(options->input, options->dimension);
-    const double h = raw.dimension == 2 ? spacing_for<2>(raw.positions, *options) : spacing_for<3>(raw.positions, *options);
+    const double h =
+        raw.dimension == 2 ? spacing_for<2>(raw.positions, *options) : spacing_for<3>(raw.positions, *options);
     options->resampling.spacing = h;
     options->resampling.grid = 0;
     SurfaceSampleOptions sampling;

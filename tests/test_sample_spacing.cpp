@@ -64,8 +64,8 @@ TEST_CASE("the spacing rule sees across scan lines, where the nearest neighbour 
 TEST_CASE("the spacing rule refuses too few points, coincident points and non-finite ones") {
   CHECK_THROWS_WITH_AS(sample_spacing<3>(lattice(2, 1.0)), doctest::Contains("needs more than 4 points, got 4"),
                        std::invalid_argument);
-  CHECK_THROWS_WITH_AS(sample_spacing<3>(std::vector<Vec<3>>(10, Vec<3>::Ones())),
-                       doctest::Contains("coincide"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(sample_spacing<3>(std::vector<Vec<3>>(10, Vec<3>::Ones())), doctest::Contains("coincide"),
+                       std::invalid_argument);
   std::vector<Vec<3>> broken = lattice(4, 1.0);
   broken[7][1] = std::nan("");
   CHECK_THROWS_WITH_AS(sample_spacing<3>(broken), doctest::Contains("point 7 has a non-finite coordinate"),

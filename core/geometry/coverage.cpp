@@ -43,10 +43,9 @@ std::string Coverage::loss_message() const {
   std::ostringstream out;
   if (input_fraction() < kLeastInputCovered) {
     out << "the output misses part of the input: " << input_points - input_covered << " of " << input_points
-        << " input points (" << percent(1.0 - input_fraction()) << ", more than "
-        << percent(1.0 - kLeastInputCovered) << ") have no output point within " << kCoverageReach
-        << " x their local spacing; the largest hole is near (" << worst_uncovered[0] << ", " << worst_uncovered[1]
-        << ", " << worst_uncovered[2] << ")";
+        << " input points (" << percent(1.0 - input_fraction()) << ", more than " << percent(1.0 - kLeastInputCovered)
+        << ") have no output point within " << kCoverageReach << " x their local spacing; the largest hole is near ("
+        << worst_uncovered[0] << ", " << worst_uncovered[1] << ", " << worst_uncovered[2] << ")";
   }
   if (output_fraction() < kLeastOutputOnInput) {
     if (out.tellp() > 0) out << "; ";

@@ -45,8 +45,8 @@ std::vector<double> kth_neighbour_distances(const std::vector<Vec<D>>& positions
 
 std::string SampleSpacing::explanation() const {
   std::ostringstream out;
-  out << "the median distance from each of the " << points << " points to its "
-      << kSpacingNeighbours << "th nearest neighbour (" << kth_median << ") / " << kSpacingNeighbourDivisor
+  out << "the median distance from each of the " << points << " points to its " << kSpacingNeighbours
+      << "th nearest neighbour (" << kth_median << ") / " << kSpacingNeighbourDivisor
       << "; median nearest-neighbour distance " << nearest_median;
   return out.str();
 }

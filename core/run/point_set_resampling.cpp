@@ -69,8 +69,8 @@ SpacingChoice choose_spacing(const std::vector<Vec<D>>& positions, const PointSe
     if (!(longest > 0.0))
       throw std::invalid_argument("--grid " + std::to_string(options.grid) +
                                   ": the points all lie at one position, so their bounding box has no side to divide");
-    return {longest / options.grid,
-            "--grid " + std::to_string(options.grid) + " across the bounding box's longest side (" + number(longest) + ")"};
+    return {longest / options.grid, "--grid " + std::to_string(options.grid) +
+                                        " across the bounding box's longest side (" + number(longest) + ")"};
   }
   const SampleSpacing measured = sample_spacing<D>(positions);
   return {measured.h, measured.explanation()};
