@@ -45,8 +45,8 @@ constexpr const char* kDescription =
     "2D: seen from above (x right, y up), orthographic, framed likewise: the points as cyan dots over the MLS curve "
     "in yellow (the zero set of F on the grid h with Delta = radius factor x h, traced by marching squares).\n"
     "Scenes' handles are white dots drawn on top.\n"
-    "h: a scene's grid spacing; for files --spacing/--grid, else a point set's median nearest-neighbour distance or a "
-    "mesh's bounding-box diagonal / 200. Splat radius (1.2 h), normal length (2 h) and quality are in units of h.\n"
+    "h: a scene's grid spacing; for files --spacing/--grid, else for a point set the median distance from a point "
+    "to its 4th nearest neighbour, halved (as amls resample chooses it), for a mesh its bounding-box diagonal / 200. Splat radius (1.2 h), normal length (2 h) and quality are in units of h.\n"
     "Examples:\n"
     "  amls render assets/scenes/clover2d.json --step last --out clover.png --size 480x360\n"
     "  amls render sphere.ply --out sphere.png --normals --view 45,30\n"
@@ -75,7 +75,10 @@ void add_render_command(CLI::App& app) {
                   "scenes only: draw the state after K steps (0: the initial shape, resampled; 'last': after the whole "
                   "history), as `amls deform` writes frame K; runs the scene's deformation loop K steps");
   CLI::Option* grid =
-      cmd->add_option("--grid", options->grid, "point sets and meshes: h = 1/N")->check(CLI::PositiveNumber);
+      cmd->add_option("--grid", options->grid,
+                      "point sets and meshes: N cells, h = 1/N within the unit square/cube, else the bounding box's "
+                      "longest side / N")
+          ->check(CLI::PositiveNumber);
   cmd->add_option("--spacing", options->spacing, "point sets and meshes: h itself (instead of --grid)")
       ->check(CLI::PositiveNumber)
       ->excludes(grid);
@@ -117,7 +120,8 @@ void add_render_command(CLI::App& app) {
         input.step = static_cast<std::size_t>(k);
       }
     }
-    input.spacing = options->spacing > 0.0 ? options->spacing : options->grid > 0 ? 1.0 / options->grid : 0.0;
+    input.spacing = options->spacing;
+    input.grid = options->grid;
     input.radius_factor = options->radius_factor;
     input.dimension = options->dimension;
     input.threads = options->threads;

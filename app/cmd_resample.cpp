@@ -1,15 +1,21 @@
 // amls resample: one resampling of a point set with oriented normals.
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/flow_report.hpp"
+#include "core/geometry/sample_spacing.hpp"
+#include "core/io/mesh_io.hpp"
 #include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
-#include "core/run/point_set_resampling.hpp"
 #include "core/io/surface_samples.hpp"
+#include "core/run/point_set_resampling.hpp"
+#include "core/util/process_memory.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace amls::app {
 
@@ -20,12 +26,62 @@ struct ResampleOptions {
   std::string input;
   std::string output;
   std::string mesh;
+  std::string json_path;
   std::string variant = "exact";
   int dimension = 0;
+  bool accept_loss = false;
 };
 
+// The positions h is measured on and the cost estimated from: a point set's
+// points, a mesh's vertices; and the dimension they are in.
+struct InputPositions {
+  int dimension = 3;
+  std::vector<Vec<3>> positions;
+};
+
+InputPositions input_positions(const std::string& path, int dimension) {
+  if (is_mesh_file(path)) return {3, read_mesh(path).vertices};
+  LoadedPointSet loaded = read_point_set(path, dimension);
+  if (loaded.points.empty()) throw std::runtime_error(path + ": holds no points");
+  return {loaded.dimension, std::move(loaded.points.positions)};
+}
+
 template <int D>
-void resample_and_write(const PointSet<D>& input, const ResampleOptions& options, PointFileFormat format) {
+std::vector<Vec<D>> in_dimension(const std::vector<Vec<3>>& positions) {
+  if constexpr (D == 3) {
+    return positions;
+  } else {
+    std::vector<Vec<D>> out;
+    out.reserve(positions.size());
+    for (const Vec<3>& p : positions) out.emplace_back(p[0], p[1]);
+    return out;
+  }
+}
+
+// Chooses h, says why, and refuses an input whose resampling at h would be too large.
+template <int D>
+double spacing_for(const std::vector<Vec<3>>& positions3, const ResampleOptions& options) {
+  const std::vector<Vec<D>> positions = in_dimension<D>(positions3);
+  SpacingChoice choice;
+  try {
+    choice = choose_spacing(positions, options.resampling);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(options.input + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
+  }
+  std::cout << "h = " << choice.h << " (" << choice.reason << ")\n";
+  if (positions.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
+    try {
+      check_resampling_cost(D, sampled_extent(positions), choice.h, options.resampling);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(options.input + ": " + e.what());
+    }
+  }
+  return choice.h;
+}
+
+template <int D>
+void resample_and_write(const PointSet<D>& input, std::size_t file_points, const ResampleOptions& options,
+                        PointFileFormat format, Stopwatch& clock) {
   const ResampledPointSet<D> result = resample_point_set(input, options.resampling);
   if (result.points.empty())
     throw std::runtime_error(
@@ -34,6 +90,8 @@ void resample_and_write(const PointSet<D>& input, const ResampleOptions& options
         std::to_string(result.grid.spacing()) + " and --radius-factor " +
         std::to_string(options.resampling.radius_factor) + "?)");
   write_point_set(options.output, result.points, format);
+  const double seconds = clock.lap();
+  const double memory = peak_memory_mib();
   std::cout << "resample (" << D << "D, " << to_string(options.resampling.variant) << "): " << input.size()
             << " points in -> " << result.points.size() << " points out, h = " << result.grid.spacing()
             << ", nearest-neighbour spacing min/median/max = " << result.spacing_h.min << " / "
@@ -45,6 +103,41 @@ void resample_and_write(const PointSet<D>& input, const ResampleOptions& options
                                      options.resampling.threads)
                      .summary()
               << ", wrote " << options.mesh << "\n";
+  const Coverage& c = result.coverage;
+  std::cout << "coverage: " << c.summary() << "\n";
+  std::cout << "time " << seconds << " s, peak memory " << memory << " MiB\n";
+  if (!options.json_path.empty()) {
+    nlohmann::json j;
+    j["input"] = options.input;
+    j["output"] = options.output;
+    j["dimension"] = D;
+    j["variant"] = to_string(options.resampling.variant);
+    j["h"] = result.grid.spacing();
+    j["radius_factor"] = options.resampling.radius_factor;
+    j["file_points"] = file_points;  // a mesh's vertices
+    j["points_in"] = input.size();   // a mesh's samples
+    j["points_out"] = result.points.size();
+    j["spacing_h"] = {
+        {"min", result.spacing_h.min}, {"median", result.spacing_h.median}, {"max", result.spacing_h.max}};
+    j["coverage"] = {{"reach", kCoverageReach},
+                     {"input_covered", c.input_fraction()},
+                     {"output_on_input", c.output_fraction()},
+                     {"input_uncovered_points", c.input_points - c.input_covered},
+                     {"output_off_points", c.output_points - c.output_on_input},
+                     {"clear_loss", c.clear_loss()}};
+    j["seconds"] = seconds;
+    j["peak_memory_mib"] = memory;
+    write_json_file(options.json_path, j);
+  }
+  if (c.clear_loss()) {
+    const std::string message = options.input + ": " + c.loss_message();
+    if (!options.accept_loss)
+      throw std::runtime_error(message + ". " + options.output +
+                               " was written for inspection. Holes open where h is well below the input's spacing "
+                               "(without --spacing and --grid, h follows it) or where the input is sparse (a larger "
+                               "--radius-factor widens the support); --accept-loss takes this output as a success");
+    std::cerr << "amls: warning: " << message << " (accepted: --accept-loss)\n";
+  }
 }
 
 }  // namespace
@@ -55,43 +148,57 @@ void add_resample_command(CLI::App& app) {
       "resample",
       "resample a surface once on a grid (unit square/cube, or the input's padded bounding box when it lies "
       "outside) and write the new points. Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D "
-      "or 3D), one without "
-      "(normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle mesh (.obj, .ply or "
-      ".off with faces; sampled at h with face normals)");
+      "or 3D), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
+      "mesh (.obj, .ply or .off with faces; sampled at h with face normals).\n"
+      "h: --spacing, else --grid, else from the input: the median distance from a point (a mesh: a vertex) to its "
+      "4th nearest neighbour, halved (docs/real-data.md). Refused up front when the output would pass 50 million "
+      "points. Afterwards the coverage of the input by the output is measured; a clear loss (under 99 % of the "
+      "input covered, or under 95 % of the output on the input) fails the command unless --accept-loss");
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .off, .xyz, .pwn, .csv, .txt, .obj)")
       ->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
   cmd->add_option("--mesh", options->mesh, "also write the new points' surface as a mesh (.obj, .ply; 2D: a polyline)");
-  CLI::Option* grid = cmd->add_option("--grid", options->resampling.grid, "cells per unit length: h = 1/N")
-                          ->check(CLI::PositiveNumber)
-                          ->capture_default_str();
-  cmd->add_option("--spacing", options->resampling.spacing, "grid spacing h (instead of --grid)")
+  CLI::Option* grid =
+      cmd->add_option("--grid", options->resampling.grid,
+                      "N cells: h = 1/N when the input lies within the unit square/cube, else its bounding box's "
+                      "longest side / N")
+          ->check(CLI::PositiveNumber);
+  cmd->add_option("--spacing", options->resampling.spacing, "grid spacing h, in the input's units")
       ->check(CLI::PositiveNumber)
       ->excludes(grid);
   cmd->add_option("--dim", options->dimension, "read the input as 2D or 3D (default: from the file)")
       ->check(CLI::IsMember({2, 3}));
+  cmd->add_option("--json", options->json_path,
+                  "also write a report: h, point counts, spacing, coverage, time and peak memory");
+  cmd->add_flag("--accept-loss", options->accept_loss,
+                "exit 0 even when the output clearly misses part of the input (a warning is still printed)");
   add_radius_factor_option(*cmd, options->resampling.radius_factor);
   add_variant_option(*cmd, options->variant);
   add_threads_option(*cmd, options->resampling.threads);
   cmd->callback([options] {
+    Stopwatch clock;
     options->resampling.variant = parse_variant(options->variant);
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
     if (!options->mesh.empty()) mesh_format_from_extension(options->mesh);
-    // Meshes are sampled at h, and normals are estimated over Delta where the file has none.
-    const double h = options->resampling.spacing > 0.0 ? options->resampling.spacing : 1.0 / options->resampling.grid;
+    // h first, from the raw input: meshes are sampled at h, and normals are estimated over Delta.
+    const InputPositions raw = input_positions(options->input, options->dimension);
+    const double h =
+        raw.dimension == 2 ? spacing_for<2>(raw.positions, *options) : spacing_for<3>(raw.positions, *options);
+    options->resampling.spacing = h;
+    options->resampling.grid = 0;
     SurfaceSampleOptions sampling;
     sampling.spacing = h;
     sampling.normal_radius = options->resampling.radius_factor * h;
-    sampling.dimension = options->dimension;
+    sampling.dimension = raw.dimension;
     sampling.threads = options->resampling.threads;
     SurfaceSamples loaded = load_surface_samples(options->input, sampling);
     for (const std::string& warning : loaded.warnings) std::cerr << "amls: warning: " << warning << "\n";
     std::cout << options->input << ": " << loaded.source << "\n";
     if (loaded.dimension == 2) {
-      resample_and_write(to_2d(loaded.points), *options, format);
+      resample_and_write(to_2d(loaded.points), raw.positions.size(), *options, format, clock);
     } else {
-      resample_and_write(loaded.points, *options, format);
+      resample_and_write(loaded.points, raw.positions.size(), *options, format, clock);
     }
   });
 }

@@ -119,6 +119,11 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
   SurfaceSamples samples;
   if (is_mesh_file(path)) {
     double h = options.spacing;
+    if (h == 0.0 && options.grid > 0) {
+      PointSetResampling given;
+      given.grid = options.grid;
+      h = choose_spacing(read_mesh(path).vertices, given).h;
+    }
     if (h == 0.0) {
       const TriangleMesh mesh = read_mesh(path);
       Vec<3> lo = Vec<3>::Constant(INFINITY), hi = Vec<3>::Constant(-INFINITY);
@@ -141,11 +146,15 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
     for (std::size_t i = 0; i < loaded.points.size(); ++i)
       if (!loaded.points.positions[i].allFinite())
         throw std::runtime_error(path + ": point " + std::to_string(i) + " has a non-finite position");
-    double h = options.spacing;
-    if (h == 0.0) {
-      h = estimate_spacing<3>(loaded.points.positions);
-      if (!(h > 0.0))
-        throw std::runtime_error(path + ": fewer than two distinct points, so no spacing to estimate; give --spacing");
+    double h = 0.0;
+    try {
+      PointSetResampling given;
+      given.spacing = options.spacing;
+      given.grid = options.grid;
+      h = loaded.dimension == 2 ? choose_spacing(to_2d(loaded.points).positions, given).h
+                                : choose_spacing(loaded.points.positions, given).h;
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(path + ": no h (" + std::string(e.what()) + "); give --spacing");
     }
     picture.h = h;
     if (loaded.has_normals) {
@@ -164,14 +173,11 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
   picture.points = std::move(samples.points);
   picture.warnings = std::move(samples.warnings);
   picture.description = path + ": " + samples.source + " (" + std::to_string(picture.dimension) +
-                        "D), h = " + format_number(picture.h) + (options.spacing > 0.0 ? "" : " (estimated)");
+                        "D), h = " + format_number(picture.h) + (options.spacing > 0.0 || options.grid > 0 ? "" : " (estimated)");
   if (options.curve && picture.dimension == 2) {
     const PointSet<2> flat = to_2d(picture.points);
-    PointSetResampling grid_options;
-    grid_options.spacing = picture.h;
-    grid_options.radius_factor = options.radius_factor;
-    picture.curve =
-        mls_curve(flat, resampling_grid(flat, grid_options), AmlsParameters{options.radius_factor}, options.threads);
+    picture.curve = mls_curve(flat, resampling_grid(flat, picture.h, options.radius_factor),
+                              AmlsParameters{options.radius_factor}, options.threads);
   }
   return picture;
 }

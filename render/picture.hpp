@@ -36,9 +36,11 @@ struct PictureInputOptions {
   // Scenes only: the state after this many steps (kFinalStep: after all of them); none: 0.
   std::optional<std::size_t> step;
   // Point sets and meshes only: h, the sampling spacing (splat size, normal length and
-  // quality are in its units; a mesh is sampled at it). 0: a point set's median
-  // nearest-neighbour distance, a mesh's bounding-box diagonal / 200.
+  // quality are in its units; a mesh is sampled at it): `spacing`, else `grid` cells as
+  // `amls resample` counts them (core/run/point_set_resampling.hpp), else a point set's
+  // h by the rule of core/geometry/sample_spacing.hpp, a mesh's bounding-box diagonal / 200.
   double spacing = 0.0;
+  int grid = 0;
   double radius_factor = 3.0;  // Delta = radius_factor h: the MLS curve (2D), normal estimation
   int dimension = 0;           // point sets only: 0 decides from the file, 2 or 3 forces it
   int threads = 1;

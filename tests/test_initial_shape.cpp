@@ -5,6 +5,7 @@
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/run/point_set_resampling.hpp"
 #include "core/run/scene_run.hpp"
 #include "core/geometry/shapes.hpp"
 #include "editor_test_support.hpp"
@@ -57,7 +58,7 @@ TEST_CASE("built-in shapes: the paper's circle and a sphere, with their scene so
   CHECK_THROWS_AS(make_circle(-1.0, 20, 0.1), std::invalid_argument);
 }
 
-TEST_CASE("a point-set file opens with h set to its median spacing") {
+TEST_CASE("a point-set file opens with h from its spacing, and the coverage of one resampling at h") {
   amls::test::TempDir dir;
   const std::string path = dir.file("circle.ply");
   write_point_set(path, sample_circle(Vec<2>(0.5, 0.5), 0.25, 200), PointFileFormat::ply_binary_little_endian);
@@ -68,6 +69,28 @@ TEST_CASE("a point-set file opens with h set to its median spacing") {
   CHECK(source.type == ShapeType::file);
   CHECK(source.resolved_file == path);
   CHECK(shape.settings.spacing == doctest::Approx(2.0 * 3.14159265 * 0.25 / 200).epsilon(0.01));
+  CHECK(shape.coverage == "resampled at h: 100.00 % of the 200 input points covered, 100.00 % of the " +
+                              std::to_string(resample_point_set(to_2d(shape.points), [&] {
+                                PointSetResampling o;
+                                o.spacing = shape.settings.spacing;
+                                return o;
+                              }()).points.size()) +
+                              " output points on the input");
+  CHECK_FALSE(shape.coverage_loss);
+}
+
+TEST_CASE("a point-set file whose resampling at h loses a part says so") {
+  amls::test::TempDir dir;
+  // A dense circle sets h; a sparse one far away (10 points) is lost at that h: 10 of 410 points.
+  PointSet<2> points = sample_circle(Vec<2>(0.0, 0.0), 1.0, 400);
+  const PointSet<2> sparse = sample_circle(Vec<2>(5.0, 0.0), 0.3, 10);
+  for (std::size_t i = 0; i < sparse.size(); ++i) points.add(sparse.positions[i], sparse.normals[i]);
+  const std::string path = dir.file("two.ply");
+  write_point_set(path, points, PointFileFormat::ply_binary_little_endian);
+  const InitialShape shape = load_initial_shape(path, 1);
+  CHECK(shape.coverage_loss);
+  CHECK(shape.coverage.find("two.ply: the output misses part of the input: 10 of 410 input points") !=
+        std::string::npos);
 }
 
 TEST_CASE("a point-set file without normals, empty or missing is refused with its name") {

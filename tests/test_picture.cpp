@@ -12,6 +12,7 @@
 #include "core/run/scene.hpp"
 #include "core/geometry/shapes.hpp"
 #include "render/headless.hpp"
+#include "core/geometry/sample_spacing.hpp"
 #include "render/picture.hpp"
 #include "scene_fixtures.hpp"
 #include "temp_dir.hpp"
@@ -128,10 +129,13 @@ TEST_CASE("render picture: a point set without normals gets estimated ones, and 
   for (std::size_t i = 0; i < picture.points.size(); i += 97)  // oriented outwards
     CHECK(picture.points.normals[i].dot(picture.points.positions[i]) > 0.9);
   REQUIRE(picture.quality.size() == 2000);
-  // h was estimated as the median nearest-neighbour distance: the median quality is 1.
+  // h was chosen by the rule of core/geometry/sample_spacing.hpp: the median quality
+  // is the median nearest-neighbour distance in units of that h.
+  const SampleSpacing rule = sample_spacing<3>(picture.points.positions);
+  CHECK(picture.h == rule.h);
   std::vector<double> sorted = picture.quality;
   std::sort(sorted.begin(), sorted.end());
-  CHECK(sorted[1000] == doctest::Approx(1.0).epsilon(0.01));
+  CHECK(sorted[1000] == doctest::Approx(rule.nearest_median / rule.h).epsilon(0.01));
   RenderOptions options;
   options.color_mode = ColorMode::scalar;
   const RenderJob job = picture_job(picture, kSmall, std::nullopt, options);

@@ -1,9 +1,13 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
 #include <stdexcept>
 
 #include "core/run/point_set_resampling.hpp"
+#include "core/geometry/kd_tree.hpp"
 #include "core/geometry/shapes.hpp"
 
 using namespace amls;
@@ -53,4 +57,76 @@ TEST_CASE("resampling refuses an empty set, missing normals and bad grids") {
   options.spacing = 1e-9;
   CHECK_THROWS_WITH_AS(resample_point_set(sample_sphere(Vec<3>(5, 5, 5), 1.0, 50), options),
                        doctest::Contains("use a larger --spacing"), std::invalid_argument);
+}
+
+TEST_CASE("without --grid or --spacing, h comes from the points, and the output does not depend on units or position") {
+  PointSetResampling options;
+  const PointSet<3> metres = sample_sphere(Vec<3>(2.0, 2.0, 2.0), 1.0, 3000);
+  const SpacingChoice choice = choose_spacing(metres.positions, options);
+  CHECK(choice.reason.find("4th nearest neighbour") != std::string::npos);
+  const ResampledPointSet<3> a = resample_point_set(metres, options);
+  CHECK(a.grid.spacing() == doctest::Approx(choice.h));
+  CHECK(a.coverage.input_fraction() == 1.0);
+  CHECK(a.coverage.output_fraction() == 1.0);
+
+  // The same scan in millimetres, 10 km away.
+  const double scale = 1000.0;
+  const Vec<3> shift(1e4, -1e4, 1e4);
+  PointSet<3> millimetres = metres;
+  for (Vec<3>& p : millimetres.positions) p = scale * p + shift;
+  const ResampledPointSet<3> b = resample_point_set(millimetres, options);
+  CHECK(b.grid.spacing() == doctest::Approx(scale * a.grid.spacing()).epsilon(1e-9));
+  REQUIRE(b.points.size() == a.points.size());
+  CHECK(b.coverage.input_covered == a.coverage.input_covered);
+  CHECK(b.coverage.output_on_input == a.coverage.output_on_input);
+  // The same points up to rounding, maybe in another order: each of b's, mapped back, is one of a's.
+  KdTree<3> tree;
+  tree.build(a.points.positions);
+  std::vector<std::uint32_t> ids;
+  std::vector<double> squared;
+  double worst = 0.0;
+  for (const Vec<3>& p : b.points.positions) {
+    tree.nearest((p - shift) / scale, 1, ids, squared);
+    worst = std::max(worst, std::sqrt(squared.front()));
+  }
+  CHECK(worst < 1e-6 * a.grid.spacing());
+}
+
+TEST_CASE("--grid N: h = 1/N in the unit box, else the bounding box's longest side / N") {
+  PointSetResampling options;
+  options.grid = 64;
+  const PointSet<2> inside = sample_circle(Vec<2>(0.5, 0.5), 0.25, 100);
+  CHECK(choose_spacing(inside.positions, options).h == 1.0 / 64);
+  const PointSet<2> outside = sample_circle(Vec<2>(10.0, 0.0), 4.0, 100);
+  const SpacingChoice choice = choose_spacing(outside.positions, options);
+  CHECK(choice.h == doctest::Approx(8.0 / 64).epsilon(1e-3));
+  CHECK(choice.reason.find("longest side") != std::string::npos);
+  options.spacing = 0.3;  // absolute, first
+  CHECK(choose_spacing(outside.positions, options).h == 0.3);
+}
+
+TEST_CASE("a resampling whose output would be too large is refused before any grid is built, naming a spacing that fits") {
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.0, 0.0, 0.0), 1.0, 2000);
+  const double area = sampled_extent(sphere.positions);
+  CHECK(area == doctest::Approx(4.0 * std::numbers::pi).epsilon(0.15));
+  PointSetResampling options;
+  options.most_points = 1e5;
+  const ResamplingCost fits = check_resampling_cost(3, area, 0.05, options);
+  CHECK(fits.points == doctest::Approx(1.5 * area / 0.0025));
+  CHECK_THROWS_WITH_AS(check_resampling_cost(3, area, 0.001, options),
+                       doctest::Contains("more than the limit of 1e+05"), std::invalid_argument);
+  try {
+    check_resampling_cost(3, area, 0.001, options);
+  } catch (const std::invalid_argument& e) {
+    // The spacing it names passes the check.
+    const std::string message = e.what();
+    const double named = std::stod(message.substr(message.find("--spacing ") + 10));
+    CHECK(check_resampling_cost(3, area, named, options).points <= options.most_points);
+  }
+  options.spacing = 0.001;
+  CHECK_THROWS_AS(resample_point_set(sphere, options), std::invalid_argument);
+  options.most_points = kMostResampledPoints;
+  options.memory_mib = 1.0;  // a machine of 2 MiB: about 500 points
+  CHECK_THROWS_WITH_AS(check_resampling_cost(3, area, 0.05, options), doctest::Contains("GiB of memory"),
+                       std::invalid_argument);
 }

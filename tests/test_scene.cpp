@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -133,4 +134,30 @@ TEST_CASE("scene: a shape file with no points is named when the shape is sampled
                                         "{\"type\": \"file\", \"path\": \"empty.xyz\"}"));
   const Scene<2> scene = std::get<Scene<2>>(read_scene(dir.file("s.json")));
   CHECK_THROWS_WITH_AS(sample_scene_shape(scene, 1.0), doctest::Contains("empty.xyz: holds no points"), std::runtime_error);
+}
+
+TEST_CASE("scene: a file shape without a grid takes h from the file's points; other shapes need a grid") {
+  TempDir dir;
+  // 200 points on a circle of radius 1 in the plane, as x y nx ny lines (the 4th neighbour two steps away).
+  std::string points;
+  for (int i = 0; i < 200; ++i) {
+    const double a = 2.0 * 3.141592653589793 * i / 200;
+    points += std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0 " + std::to_string(std::cos(a)) +
+              " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  write_text(dir.file("circle.xyz"), points);
+  write_text(dir.file("scene.json"), R"({"dimension": 2, "shape": {"type": "file", "path": "circle.xyz"})"
+             R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})");
+  const AnyScene any = read_scene(dir.file("scene.json"));
+  const Scene<2>& s = std::get<Scene<2>>(any);
+  CHECK(s.grid_from_file);
+  CHECK(s.h() == doctest::Approx(2.0 * 3.141592653589793 / 200).epsilon(1e-3));
+
+  CHECK(error_of(R"({"dimension": 2, "shape": {"type": "circle"})"
+                 R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})", dir)
+            .find("missing the required key 'grid' (only a file shape may leave it out") != std::string::npos);
+  write_text(dir.file("two.xyz"), "0 0 0 1 0 0\n1 0 0 1 0 0\n");
+  CHECK(error_of(R"({"dimension": 2, "shape": {"type": "file", "path": "two.xyz"})"
+                 R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})", dir)
+            .find("shape.path: no 'grid' given, and h cannot be measured on the file") != std::string::npos);
 }

@@ -98,11 +98,8 @@ EditSession<D>::EditSession(const InitialShape& shape, int threads)
 template <int D>
 std::unique_ptr<DeformingSurface<D>> EditSession<D>::make_surface(const SurfaceSettings& settings) const {
   validate(settings);
-  PointSetResampling grid_options;
-  grid_options.spacing = settings.spacing;
-  grid_options.radius_factor = settings.radius_factor;
   // The grid `amls deform` builds for the scene: anchored by the initial shape's points.
-  const Grid<D> grid = resampling_grid(initial_.points, grid_options);
+  const Grid<D> grid = resampling_grid(initial_.points, settings.spacing, settings.radius_factor);
   return std::make_unique<DeformingSurface<D>>(grid, AmlsParameters{settings.radius_factor}, settings.variant,
                                                threads_);
 }

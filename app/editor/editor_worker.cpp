@@ -135,7 +135,10 @@ void EditorWorker::start(const InitialShape& shape) {
   std::ostringstream text;
   text << "Loaded " << shape.name << ": " << describe_count(shape.points.size(), "points") << ", " << shape.dimension()
        << "D, h = " << shape.settings.spacing;
+  if (!shape.coverage.empty() && !shape.coverage_loss) text << "; " << shape.coverage;
   message(Message::Level::info, text.str());
+  // Last, so that the status line shows it, in red.
+  if (shape.coverage_loss) message(Message::Level::error, shape.coverage);
 }
 
 void EditorWorker::note_result(const EditResult& result) {

@@ -6,8 +6,9 @@
 #include <stdexcept>
 
 #include "app/editor/scene_start.hpp"
-#include "core/surface/metrics.hpp"
+#include "core/geometry/sample_spacing.hpp"
 #include "core/io/file_format.hpp"
+#include "core/run/point_set_resampling.hpp"
 #include "core/io/point_set_io.hpp"
 
 namespace amls::editor {
@@ -52,18 +53,26 @@ double round_significant(double x, int digits) {
   return std::round(x * scale) / scale;
 }
 
-// The median distance from a point to its nearest neighbour.
+// h by the rule every command uses (core/geometry/sample_spacing.hpp).
 template <int D>
-double median_spacing(const PointSet<D>& points) {
-  Vec<D> lo = points.positions.front(), hi = lo;
-  for (const Vec<D>& p : points.positions) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
+double spacing_of(const PointSet<D>& points, const std::string& path) {
+  try {
+    return sample_spacing<D>(points.positions).h;
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": " + e.what());
   }
-  // A first guess of the spacing: the box's diagonal spread over the points along a curve or surface.
-  const double n = static_cast<double>(points.size());
-  const double guess = std::max((hi - lo).norm() / (D == 2 ? n : std::sqrt(n)), 1e-12);
-  return spacing_stats(points, guess).median * guess;
+}
+
+// One resampling at the shape's h, as `amls resample` would do it, and its coverage of the points.
+template <int D>
+void measure_coverage_of(InitialShape& shape, const PointSet<D>& points) {
+  PointSetResampling options;
+  options.spacing = shape.settings.spacing;
+  options.radius_factor = shape.settings.radius_factor;
+  const Coverage c = resample_point_set(points, options).coverage;
+  shape.coverage = "resampled at h: " + c.summary();
+  shape.coverage_loss = c.clear_loss();
+  if (shape.coverage_loss) shape.coverage = shape.name + ": " + c.loss_message();
 }
 
 }  // namespace
@@ -86,15 +95,22 @@ InitialShape load_point_set_file(const std::string& path) {
   if (!loaded.has_normals)
     throw std::runtime_error(path +
                              ": the points have no normals, and the editor needs oriented normals (x y z nx ny nz)");
-  if (loaded.points.size() < 2) throw std::runtime_error(path + ": a surface needs more than one point");
   InitialShape shape;
   shape.source = loaded.dimension == 2 ? ShapeSource(file_shape<2>(path)) : ShapeSource(file_shape<3>(path));
-  const double spacing = loaded.dimension == 2 ? median_spacing(to_2d(loaded.points)) : median_spacing(loaded.points);
-  if (!(spacing > 0.0)) throw std::runtime_error(path + ": the points all lie at one position");
+  const double spacing =
+      loaded.dimension == 2 ? spacing_of(to_2d(loaded.points), path) : spacing_of(loaded.points, path);
   shape.settings.spacing = round_significant(spacing, 3);
   shape.points = std::move(loaded.points);
   shape.name = std::filesystem::path(path).filename().string();
   shape.warnings = std::move(loaded.warnings);
+  try {
+    if (loaded.dimension == 2)
+      measure_coverage_of(shape, to_2d(shape.points));
+    else
+      measure_coverage_of(shape, shape.points);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
   return shape;
 }
 

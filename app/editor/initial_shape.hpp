@@ -17,10 +17,11 @@ InitialShape make_sphere(double radius, std::size_t points, double spacing);
 // (h = 0.024, as the clover scene), or a sphere of 10 000 points (h = 0.04).
 InitialShape default_shape(int dimension);
 
-// A point set with oriented normals (.ply, .xyz), 2D or 3D; h is the points'
-// median nearest-neighbour distance (3 significant digits). Throws
-// std::runtime_error naming the file for a file that cannot be read, is empty
-// or has no normals.
+// A point set with oriented normals (.ply, .xyz), 2D or 3D; h by the rule of
+// core/geometry/sample_spacing.hpp (3 significant digits), and the coverage of
+// one resampling at h measured as `amls resample` measures it. Throws
+// std::runtime_error naming the file for a file that cannot be read, has too
+// few points or has no normals.
 InitialShape load_point_set_file(const std::string& path);
 
 // A scene (.json) or a point-set file, by the extension; `threads` sample a

@@ -44,6 +44,10 @@ struct InitialShape {
   std::vector<Vec<3>> handles;  // handles to start with (a scene's first stage)
   std::string name;             // shown in the title and messages
   std::vector<std::string> warnings;
+  // A point-set file opened on its own: how well one resampling at h covers it,
+  // as `amls resample` reports it ("" otherwise), and whether that is a clear loss.
+  std::string coverage;
+  bool coverage_loss = false;
 
   // The source's dimension is the shape's: one fact, kept once.
   int dimension() const { return std::holds_alternative<SceneShape<2>>(source) ? 2 : 3; }

@@ -75,6 +75,16 @@ void KdTree<D>::gather(const Vec<D>& x, double radius, std::vector<std::uint32_t
   impl_->tree.findNeighbors(results, x.data(), nanoflann::SearchParams());
 }
 
+template <int D>
+void KdTree<D>::nearest(const Vec<D>& x, std::size_t count, std::vector<std::uint32_t>& ids,
+                        std::vector<double>& squared) const {
+  ids.resize(count);
+  squared.resize(count);
+  const std::size_t found = impl_->tree.knnSearch(x.data(), count, ids.data(), squared.data());
+  ids.resize(found);
+  squared.resize(found);
+}
+
 template class KdTree<2>;
 template class KdTree<3>;
 

@@ -27,6 +27,9 @@ class KdTree {
   // Appends to `out` the ids of the points p with |p - x| < radius, in the
   // tree's order (fixed for a given build). Allocates only when `out` grows.
   void gather(const Vec<D>& x, double radius, std::vector<std::uint32_t>& out) const;
+  // The ids of the `count` points nearest to x (fewer if the tree holds fewer)
+  // and their squared distances, nearest first, written over `ids` and `squared`.
+  void nearest(const Vec<D>& x, std::size_t count, std::vector<std::uint32_t>& ids, std::vector<double>& squared) const;
 
  private:
   struct Impl;

@@ -1,8 +1,14 @@
 #include "core/run/point_set_resampling.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "core/geometry/sample_spacing.hpp"
+#include "core/util/process_memory.hpp"
 
 namespace amls {
 
@@ -12,35 +18,108 @@ namespace {
 // Delta / h rounded up, and the walk's block of 4 cells.
 std::int64_t margin_cells(double radius_factor) { return static_cast<std::int64_t>(std::ceil(radius_factor)) + 8; }
 
-double spacing_of(const PointSetResampling& options) {
-  if (options.spacing != 0.0) {
-    if (!(options.spacing > 0.0) || !std::isfinite(options.spacing))
-      throw std::invalid_argument("--spacing must be a positive number, got " + std::to_string(options.spacing));
-    return options.spacing;
+// Output points per h^2 of area (3D) or per h of length (2D): a surface crosses
+// about (|nx| + |ny| + |nz|) grid edges per h^2, 1.5 on average over directions;
+// a curve (|nx| + |ny|) per h, 4/pi on average.
+constexpr double kPointsPerCell3 = 1.5;
+constexpr double kPointsPerCell2 = 4.0 / std::numbers::pi;
+
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(4);
+  out << x;
+  return out.str();
+}
+
+template <int D>
+void bounds(const std::vector<Vec<D>>& positions, Vec<D>& lo, Vec<D>& hi) {
+  lo = positions.front();
+  hi = lo;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!positions[i].allFinite())
+      throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
+    lo = lo.cwiseMin(positions[i]);
+    hi = hi.cwiseMax(positions[i]);
   }
-  if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1, got " + std::to_string(options.grid));
-  return 1.0 / options.grid;
+}
+
+double median_of(std::vector<double> values) {
+  auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
 }
 
 }  // namespace
 
 template <int D>
-Grid<D> resampling_grid(const PointSet<D>& points, const PointSetResampling& options) {
-  const double h = spacing_of(options);
-  if (!(options.radius_factor > 0.0) || !std::isfinite(options.radius_factor))
-    throw std::invalid_argument("--radius-factor must be positive, got " + std::to_string(options.radius_factor));
-  if (points.empty()) return Grid<D>(Vec<D>::Zero(), h);
-  Vec<D> lo = points.positions.front(), hi = lo;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!points.positions[i].allFinite())
-      throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
-    lo = lo.cwiseMin(points.positions[i]);
-    hi = hi.cwiseMax(points.positions[i]);
+SpacingChoice choose_spacing(const std::vector<Vec<D>>& positions, const PointSetResampling& options) {
+  if (options.spacing != 0.0) {
+    if (!(options.spacing > 0.0) || !std::isfinite(options.spacing))
+      throw std::invalid_argument("--spacing must be a positive number, got " + std::to_string(options.spacing));
+    return {options.spacing, "--spacing " + number(options.spacing)};
   }
+  if (options.grid != 0) {
+    if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1, got " + std::to_string(options.grid));
+    if (positions.empty()) return {1.0 / options.grid, "--grid " + std::to_string(options.grid) + " over the unit box"};
+    Vec<D> lo, hi;
+    bounds(positions, lo, hi);
+    if ((lo.array() >= 0.0).all() && (hi.array() <= 1.0).all())
+      return {1.0 / options.grid, "--grid " + std::to_string(options.grid) + " over the unit box"};
+    const double longest = (hi - lo).maxCoeff();
+    if (!(longest > 0.0))
+      throw std::invalid_argument("--grid " + std::to_string(options.grid) +
+                                  ": the points all lie at one position, so their bounding box has no side to divide");
+    return {longest / options.grid, "--grid " + std::to_string(options.grid) +
+                                        " across the bounding box's longest side (" + number(longest) + ")"};
+  }
+  const SampleSpacing measured = sample_spacing<D>(positions);
+  return {measured.h, measured.explanation()};
+}
+
+template <int D>
+double sampled_extent(const std::vector<Vec<D>>& positions) {
+  const double kth = median_of(kth_neighbour_distances<D>(positions, kSpacingNeighbours));
+  const double n = static_cast<double>(positions.size());
+  // k neighbours within distance d: a density of k / (pi d^2) per area, k / (2 d) per length.
+  constexpr double k = kSpacingNeighbours;
+  return D == 2 ? n * 2.0 * kth / k : n * std::numbers::pi * kth * kth / k;
+}
+
+ResamplingCost check_resampling_cost(int dimension, double extent, double h, const PointSetResampling& options) {
+  ResamplingCost cost;
+  const double memory = options.memory_mib > 0.0 ? options.memory_mib : 0.5 * physical_memory_mib();
+  cost.limit = options.most_points;
+  if (memory > 0.0) cost.limit = std::min(cost.limit, memory / kMiBPerResampledPoint);
+  if (dimension == 2) {
+    cost.points = kPointsPerCell2 * extent / h;
+    cost.fitting_spacing = kPointsPerCell2 * extent / cost.limit;
+  } else {
+    cost.points = kPointsPerCell3 * extent / (h * h);
+    cost.fitting_spacing = std::sqrt(kPointsPerCell3 * extent / cost.limit);
+  }
+  if (cost.points > cost.limit)
+    throw std::invalid_argument(
+        "h = " + number(h) + " would give about " + number(cost.points) + " points (the input samples a " +
+        (dimension == 2 ? "curve of length " : "surface of area ") + number(extent) + "), more than the limit of " +
+        number(cost.limit) + " (" + number(options.most_points) + " points, and " + number(memory / 1024.0) +
+        " GiB of memory at about 2 KiB a point); --spacing " + number(cost.fitting_spacing * 1.01) +
+        " or larger would fit");
+  return cost;
+}
+
+template <int D>
+Grid<D> resampling_grid(const PointSet<D>& points, double h, double radius_factor) {
+  if (!(h > 0.0) || !std::isfinite(h))
+    throw std::invalid_argument("the grid spacing h must be a positive number, got " + std::to_string(h));
+  if (!(radius_factor > 0.0) || !std::isfinite(radius_factor))
+    throw std::invalid_argument("--radius-factor must be positive, got " + std::to_string(radius_factor));
+  if (points.empty()) return Grid<D>(Vec<D>::Zero(), h);
+  Vec<D> lo, hi;
+  bounds(points.positions, lo, hi);
   const bool in_unit_box = (lo.array() >= 0.0).all() && (hi.array() <= 1.0).all();
-  const Vec<D> origin = in_unit_box ? Vec<D>::Zero() : Vec<D>(lo.array() - 2.0 * options.radius_factor * h);
+  const Vec<D> origin = in_unit_box ? Vec<D>::Zero() : Vec<D>(lo.array() - 2.0 * radius_factor * h);
   const Grid<D> grid(origin, h);
-  const double most = static_cast<double>(Grid<D>::kMaxIndex - margin_cells(options.radius_factor));
+  const double most = static_cast<double>(Grid<D>::kMaxIndex - margin_cells(radius_factor));
   for (int a = 0; a < D; ++a) {
     const double cells = (hi[a] - origin[a]) / h;
     if (!(cells < most))
@@ -64,16 +143,26 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
                                   " has a zero or non-finite normal");
   if (options.threads < 1)
     throw std::invalid_argument("--threads must be at least 1, got " + std::to_string(options.threads));
-  const Grid<D> grid = resampling_grid(points, options);
+  const double h = choose_spacing(points.positions, options).h;
+  const Grid<D> grid = resampling_grid(points, h, options.radius_factor);
+  if (points.size() > static_cast<std::size_t>(kSpacingNeighbours))
+    check_resampling_cost(D, sampled_extent(points.positions), h, options);
+  const std::vector<Vec<D>> input = points.positions;
   DeformingSurface<D> surface(grid, AmlsParameters{options.radius_factor}, options.variant, options.threads);
   surface.set_points(std::move(points));
   const StepStats stats = surface.resample_only();
-  SpacingStats spacing = spacing_stats(surface.points(), grid.spacing());
-  return ResampledPointSet<D>{surface.points(), grid, stats, spacing};
+  ResampledPointSet<D> out{surface.points(), grid, stats, spacing_stats(surface.points(), h), Coverage{}};
+  if (input.size() > static_cast<std::size_t>(kSpacingNeighbours))
+    out.coverage = measure_coverage<D>(input, out.points.positions, h);
+  return out;
 }
 
-template Grid<2> resampling_grid<2>(const PointSet<2>&, const PointSetResampling&);
-template Grid<3> resampling_grid<3>(const PointSet<3>&, const PointSetResampling&);
+template SpacingChoice choose_spacing<2>(const std::vector<Vec<2>>&, const PointSetResampling&);
+template SpacingChoice choose_spacing<3>(const std::vector<Vec<3>>&, const PointSetResampling&);
+template double sampled_extent<2>(const std::vector<Vec<2>>&);
+template double sampled_extent<3>(const std::vector<Vec<3>>&);
+template Grid<2> resampling_grid<2>(const PointSet<2>&, double, double);
+template Grid<3> resampling_grid<3>(const PointSet<3>&, double, double);
 template ResampledPointSet<2> resample_point_set<2>(PointSet<2>, const PointSetResampling&);
 template ResampledPointSet<3> resample_point_set<3>(PointSet<3>, const PointSetResampling&);
 

@@ -11,7 +11,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/geometry/sample_spacing.hpp"
 #include "core/io/file_format.hpp"
+#include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
 
 namespace amls {
@@ -260,6 +262,23 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at) {
   return history;
 }
 
+// h for a file shape without a grid: the rule of core/geometry/sample_spacing.hpp
+// on the file's points (a mesh's vertices).
+template <int D>
+double spacing_of_file(const std::string& file, const Place& at) {
+  std::vector<Vec<D>> positions;
+  try {
+    if (is_mesh_file(file)) {
+      for (const Vec<3>& v : read_mesh(file).vertices) positions.push_back(v.template head<D>());
+    } else {
+      for (const Vec<3>& p : read_point_set(file, D).points.positions) positions.push_back(p.template head<D>());
+    }
+    return sample_spacing<D>(positions).h;
+  } catch (const std::exception& e) {
+    at.fail(std::string("no 'grid' given, and h cannot be measured on the file: ") + e.what());
+  }
+}
+
 template <int D>
 Scene<D> parse_scene(const json& j, const std::string& path) {
   Scene<D> scene;
@@ -269,9 +288,10 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
   r.allow({"dimension"});
   if (const json* v = r.find("name")) scene.name = as_string(*v, root.key("name"));
   if (const json* v = r.find("description")) scene.description = as_string(*v, root.key("description"));
-  {
+  const json* grid_json = r.find("grid");
+  if (grid_json) {
     const Place grid_at = root.key("grid");
-    ObjectReader grid(r.require("grid"), grid_at);
+    ObjectReader grid(*grid_json, grid_at);
     const json* cells = grid.find("cells");
     const json* spacing = grid.find("spacing");
     if ((cells == nullptr) == (spacing == nullptr)) grid_at.fail("give exactly one of 'cells' (h = 1/cells) or 'spacing' (h)");
@@ -284,6 +304,12 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
     grid.finish();
   }
   scene.shape = parse_shape<D>(r.require("shape"), root.key("shape"), path);
+  if (!grid_json) {
+    if (scene.shape.type != ShapeType::file)
+      root.fail("missing the required key 'grid' (only a file shape may leave it out: h then comes from the file)");
+    scene.grid_spacing = spacing_of_file<D>(scene.shape.resolved_file, root.key("shape").key("path"));
+    scene.grid_from_file = true;
+  }
   if (const json* v = r.find("radius_factor")) scene.radius_factor = as_positive(*v, root.key("radius_factor"));
   if (const json* v = r.find("variant")) {
     try {

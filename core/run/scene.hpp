@@ -42,6 +42,9 @@ struct Scene {
   SceneShape<D> shape;
   int grid_cells = 0;         // h = 1 / grid_cells, if set
   double grid_spacing = 0.0;  // h itself, if set (exactly one of the two is set)
+  // A file shape's scene without a grid: grid_spacing was measured on the file
+  // (core/geometry/sample_spacing.hpp).
+  bool grid_from_file = false;
   double radius_factor = 3.0;
   Variant variant = Variant::exact;
   MlsKind kind = MlsKind::rigid;

@@ -164,11 +164,7 @@ SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, 
   };
   report.probes = (tracers.size() + stride - 1) / stride;
 
-  PointSetResampling grid_options;
-  grid_options.spacing = scene.grid_spacing;
-  grid_options.grid = scene.grid_cells > 0 ? scene.grid_cells : 1;
-  grid_options.radius_factor = scene.radius_factor;
-  const Grid<D> grid = resampling_grid(shape.points, grid_options);
+  const Grid<D> grid = resampling_grid(shape.points, scene.h(), scene.radius_factor);
   report.grid_origin.template head<D>() = grid.origin();
   DeformingSurface<D> surface(grid, AmlsParameters{scene.radius_factor}, scene.variant, options.threads);
   report.points_initial = report.points_min = report.points_max = shape.points.size();

@@ -9,4 +9,7 @@ double peak_memory_mib();
 // /proc/self/clear_refs, value 5). Returns false where that is not possible.
 bool reset_peak_memory();
 
+// The machine's physical memory in MiB, or 0 where unknown.
+double physical_memory_mib();
+
 }  // namespace amls

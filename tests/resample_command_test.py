@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""resample_command_test.py AMLS WORK_DIR: `amls resample`'s choices and refusals, end to end.
+
+On small generated 2D point sets (a circle of points with normals):
+- with no spacing option, h is the rule's and is printed with its reason, the
+  coverage is printed and in the JSON, and the command exits 0;
+- a far sparse part lost at the dense part's h exits 1 naming the loss, and
+  --accept-loss exits 0 with a warning, writing the same file;
+- an h whose output would pass the point limit is refused before any work,
+  naming a spacing that fits, and that spacing then runs.
+"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def circle(cx, cy, r, n):
+    lines = []
+    for i in range(n):
+        a = 2 * math.pi * i / n
+        lines.append(f"{cx + r * math.cos(a)!r} {cy + r * math.sin(a)!r} 0 {math.cos(a)!r} {math.sin(a)!r} 0")
+    return lines
+
+
+def run(amls, *args):
+    r = subprocess.run([amls, "resample", *args], capture_output=True, text=True)
+    return r.returncode, r.stdout, r.stderr
+
+
+def main():
+    amls, work = sys.argv[1:3]
+    os.makedirs(work, exist_ok=True)
+    dense = os.path.join(work, "dense.xyz")
+    with open(dense, "w") as f:
+        f.write("\n".join(circle(3.0, 3.0, 1.0, 400)) + "\n")
+    report = os.path.join(work, "dense.json")
+    code, out, err = run(amls, dense, "--dim", "2", "--out", os.path.join(work, "dense_out.xyz"), "--json", report)
+    if code != 0:
+        fail(f"the dense circle exited {code}:\n{out}{err}")
+    step = 2 * math.pi / 400
+    m = re.search(r"^h = ([0-9.e+-]+) \(the median distance from each of the 400 points to its 4th nearest neighbour",
+                  out, re.M)
+    if not m or abs(float(m.group(1)) / step - 1) > 1e-3:
+        fail(f"expected h = the circle's step {step} with the rule's reason, got:\n{out}")
+    if "coverage: 100.00 % of the 400 input points covered" not in out:
+        fail(f"expected the coverage line, got:\n{out}")
+    with open(report) as f:
+        r = json.load(f)
+    if r["coverage"]["input_covered"] != 1.0 or r["coverage"]["clear_loss"]:
+        fail(f"the JSON's coverage: {r['coverage']}")
+
+    both = os.path.join(work, "both.xyz")
+    with open(both, "w") as f:
+        f.write("\n".join(circle(3.0, 3.0, 1.0, 400) + circle(9.0, 3.0, 0.3, 10)) + "\n")
+    lost = os.path.join(work, "both_out.xyz")
+    code, out, err = run(amls, both, "--dim", "2", "--out", lost)
+    if code != 1 or "the output misses part of the input: 10 of 410 input points" not in err:
+        fail(f"a lost part: expected exit 1 naming 10 of 410 points, got {code}:\n{out}{err}")
+    if not os.path.exists(lost):
+        fail("a lost part: the output was not kept for inspection")
+    code, out, err = run(amls, both, "--dim", "2", "--out", lost, "--accept-loss")
+    if code != 0 or "(accepted: --accept-loss)" not in err:
+        fail(f"--accept-loss: expected exit 0 with a warning, got {code}:\n{out}{err}")
+
+    code, out, err = run(amls, dense, "--dim", "2", "--out", os.path.join(work, "x.xyz"), "--spacing", "1e-9")
+    m = re.search(r"more than the limit of .*; --spacing ([0-9.e+-]+) or larger would fit", err)
+    if code != 1 or not m:
+        fail(f"a tiny --spacing: expected a refusal naming a spacing, got {code}:\n{out}{err}")
+    code, out, err = run(amls, dense, "--dim", "2", "--out", os.path.join(work, "x.xyz"), "--spacing", m.group(1))
+    if "more than the limit" in err:
+        fail(f"the named --spacing {m.group(1)} is refused too:\n{err}")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
