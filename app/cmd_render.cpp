@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/terminal_progress.hpp"
+#include "core/surface/spacing_band.hpp"
 #include "render/headless.hpp"
 #include "render/picture.hpp"
 
@@ -67,7 +68,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--normals", options->normals, "draw each point's normal as a line 2 h long (blue)");
   cmd->add_option("--color", options->color,
                   "uniform (sand), normal (n * 0.5 + 0.5 as RGB) or quality (each point's nearest-neighbour spacing "
-                  "in units of h on a viridis ramp from 0.3 h, violet, to 1.5 h, yellow)")
+                  "in units of h on a viridis ramp from " + spacing_band_text(kSpacingBandLow) + " h, violet, to " +
+                      spacing_band_text(kSpacingBandHigh) + " h, yellow)")
       ->check(CLI::IsMember({"uniform", "normal", "quality"}))
       ->capture_default_str();
   cmd->add_option("--step", options->step,

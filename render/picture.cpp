@@ -11,6 +11,7 @@
 #include "core/surface/curve_tracing.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/surface/metrics.hpp"
+#include "core/surface/spacing_band.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/run/scene_state.hpp"
@@ -23,8 +24,6 @@ namespace {
 
 // Meshes without a given spacing are sampled at their bounding box's diagonal over this.
 constexpr double kMeshSamplesPerDiagonal = 200.0;
-// The quality colour range in units of h: resampling keeps the spacing within these bounds.
-constexpr float kQualityLow = 0.3f, kQualityHigh = 1.5f;
 // 2D dots: about this fraction of the spacing on screen, within these pixel sizes, in a
 // colour that stands apart from the curve's yellow; the curve a little wider than a pixel.
 constexpr float kDotFractionOfSpacing = 0.45f, kDotMinPx = 1.5f, kDotMaxPx = 7.0f;
@@ -349,7 +348,7 @@ RenderJob picture_job(const Picture& picture, ImageSize size, const std::optiona
   job.width = size.width;
   job.height = size.height;
   job.framing = Framing::keep;
-  if (options.color_mode == ColorMode::scalar) options.scalar_range = glm::vec2(kQualityLow, kQualityHigh);
+  if (options.color_mode == ColorMode::scalar) options.scalar_range = glm::vec2(kSpacingBandLow, kSpacingBandHigh);
   options.handle_size_px = kHandleSizePx;
   const float aspect = static_cast<float>(size.width) / static_cast<float>(size.height);
   const float h = static_cast<float>(picture.h);

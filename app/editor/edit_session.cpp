@@ -1,25 +1,18 @@
 #include "app/editor/edit_session.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "core/deform/mls_deformation.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
+#include "core/run/settle.hpp"
 
 namespace amls::editor {
 
 namespace {
-
-template <int D>
-PointSet<D> from_3d(const PointSet<3>& points) {
-  if constexpr (D == 2) {
-    return to_2d(points);
-  } else {
-    return points;
-  }
-}
 
 // The shape's source, if the shape has dimension D.
 template <int D>
@@ -27,13 +20,6 @@ const SceneShape<D>& source_of(const InitialShape& shape) {
   if (const SceneShape<D>* source = std::get_if<SceneShape<D>>(&shape.source)) return *source;
   throw std::invalid_argument("a " + std::to_string(shape.dimension()) + "D shape in a " + std::to_string(D) +
                               "D session");
-}
-
-template <int D>
-std::vector<Vec<D>> handles_from_3d(const std::vector<Vec<3>>& handles) {
-  std::vector<Vec<D>> out;
-  for (const Vec<3>& h : handles) out.push_back(h.template head<D>());
-  return out;
 }
 
 void add_stats(EditResult& result, const StepStats& stats) {
@@ -86,7 +72,7 @@ class Phases {
 template <int D>
 EditSession<D>::EditSession(const InitialShape& shape, int threads)
     : threads_(threads),
-      initial_{from_3d<D>(shape.points), handles_from_3d<D>(shape.handles), shape.settings, false,
+      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), shape.settings, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
       recording_(initial_.recording) {
@@ -211,28 +197,28 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
   const ResamplePolicy& policy = settings_.policy;
   const std::size_t k = recording_.steps().size();
   // The phases of settling the points before step `step`: measuring them (`auto`, after step 0), resampling.
-  auto settle_phases = [&](std::size_t step) {
-    return (policy.kind == ResamplePolicy::Kind::automatic && step > 0 ? 1 : 0) + 1;
-  };
+  auto settle_phases = [&](std::size_t step) { return (policy_measures(policy, step) ? 1 : 0) + 1; };
   Phases phases(control, (settle_first ? settle_phases(k) : 0) + 1 + (resample ? settle_phases(k + 1) : 0));
   // Settles the points before step `step`; false if the edit must stop.
-  auto settle = [&](std::size_t step, bool& resampled) {
-    if (settle_phases(step) > 1 && !phases.next("checking the sampling")) return false;
-    resampled = policy.resample_now(step, surface_->points(), grid().spacing(), surface_->pool());
-    if (!resampled) return true;
-    if (!phases.next("resampling")) return false;
-    add_stats(result, surface_->resample_only());
-    ++result.resamples;
+  auto settle_points = [&](std::size_t step, bool& resampled) {
+    const std::optional<Settling> settled =
+        settle(*surface_, policy, step, [&](const char* phase) { return phases.next(phase); });
+    if (!settled) return false;
+    resampled = settled->resampled;
+    if (resampled) {
+      add_stats(result, settled->stats);
+      ++result.resamples;
+    }
     return true;
   };
   bool resampled_first = false;
   bool resampled_after = false;
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
-    if (settle_first && !settle(k, resampled_first)) return false;
+    if (settle_first && !settle_points(k, resampled_first)) return false;
     if (!phases.next("deforming")) return false;
     add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
-    return !resample || settle(k + 1, resampled_after);
+    return !resample || settle_points(k + 1, resampled_after);
   });
   if (!finished) {
     if (phases.started()) roll_back(std::move(before));

@@ -22,14 +22,6 @@ Vec<3> to_3d_vector(const Vec<D>& v) {
 }
 
 template <int D>
-std::vector<Vec<D>> from_3d_vectors(const std::vector<Vec<3>>& in) {
-  std::vector<Vec<D>> out;
-  out.reserve(in.size());
-  for (const Vec<3>& v : in) out.push_back(v.template head<D>());
-  return out;
-}
-
-template <int D>
 PointSet<3> points_3d(const PointSet<D>& points) {
   if constexpr (D == 3) {
     return points;
@@ -198,7 +190,7 @@ void EditorWorker::execute(const QueuedCommand& queued) {
                 message(Message::Level::warning, "A handle move was dropped: the handles changed meanwhile");
                 return;
               }
-              note_result(s.move_handles(from_3d_vectors<D>(c.positions), control));
+              note_result(s.move_handles(from_3d<D>(c.positions), control));
             });
           },
           [&](const CancelDrag&) { require_session([&](auto& s) { s.cancel_drag(); }); },
