@@ -70,12 +70,13 @@ class Phases {
 }  // namespace
 
 template <int D>
-EditSession<D>::EditSession(const InitialShape& shape, int threads)
+EditSession<D>::EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes)
     : threads_(threads),
       initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), shape.settings, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
-      recording_(initial_.recording) {
+      recording_(initial_.recording),
+      undo_budget_(undo_bytes) {
   validate(settings_);
   surface_ = make_surface(settings_);
   restore(initial_);
@@ -115,10 +116,35 @@ void EditSession<D>::restore(const State& state) {
 }
 
 template <int D>
+std::size_t EditSession<D>::State::bytes() const {
+  std::size_t total =
+      sizeof(State) + (points.positions.size() + points.normals.size() + handles.size()) * sizeof(Vec<D>);
+  for (const RecordedStep<D>& step : recording.steps())
+    total += sizeof(step) + (step.from.size() + step.to.size()) * sizeof(Vec<D>);
+  return total;
+}
+
+template <int D>
 void EditSession<D>::push_undo() {
-  undo_.push_back(current_state());
-  if (undo_.size() > kMaxUndo) undo_.pop_front();
+  push_back_undo(current_state());
   redo_.clear();
+}
+
+template <int D>
+void EditSession<D>::push_back_undo(State state) {
+  undo_bytes_ += state.bytes();
+  undo_.push_back(std::move(state));
+  while (undo_.size() > 1 && undo_bytes_ > undo_budget_) pop_undo(false);
+}
+
+template <int D>
+void EditSession<D>::pop_undo(bool newest) {
+  State& state = newest ? undo_.back() : undo_.front();
+  undo_bytes_ -= state.bytes();
+  if (newest)
+    undo_.pop_back();
+  else
+    undo_.pop_front();
 }
 
 template <int D>
@@ -169,7 +195,7 @@ template <int D>
 bool EditSession<D>::cancel_drag() {
   if (undo_.empty()) return false;
   restore(undo_.back());
-  undo_.pop_back();
+  pop_undo(true);
   return true;
 }
 
@@ -312,22 +338,22 @@ void EditSession<D>::set_resampling(bool enabled, const ResamplePolicy& policy) 
 }
 
 template <int D>
-bool EditSession<D>::travel(std::deque<State>& from, std::deque<State>& to) {
-  if (from.empty()) return false;
-  to.push_back(current_state());
-  restore(from.back());
-  from.pop_back();
+bool EditSession<D>::undo() {
+  if (undo_.empty()) return false;
+  redo_.push_back(current_state());
+  restore(undo_.back());
+  pop_undo(true);
   return true;
 }
 
 template <int D>
-bool EditSession<D>::undo() {
-  return travel(undo_, redo_);
-}
-
-template <int D>
 bool EditSession<D>::redo() {
-  return travel(redo_, undo_);
+  if (redo_.empty()) return false;
+  State now = current_state();
+  restore(redo_.back());
+  redo_.pop_back();
+  push_back_undo(std::move(now));
+  return true;
 }
 
 template <int D>
