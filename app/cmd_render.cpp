@@ -7,10 +7,11 @@
 
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/picture_input.hpp"
+#include "app/render_arguments.hpp"
 #include "app/terminal_progress.hpp"
 #include "core/surface/spacing_band.hpp"
 #include "render/headless.hpp"
-#include "render/picture.hpp"
 
 namespace amls::app {
 
@@ -133,6 +134,8 @@ void add_render_command(CLI::App& app) {
       return load_picture(options->input, with_progress);
     }();
     for (const std::string& warning : picture.warnings) std::cerr << "amls: warning: " << warning << "\n";
+    if (picture.dimension == 2 && view)
+      throw std::invalid_argument("--view is for 3D inputs; a 2D input is always seen from above, framed to fit");
     RenderJob job = picture_job(picture, size, view, render);
     job.supersample = options->supersample;
     render_to_png(options->out, job, [&](SplatRenderer& renderer) { picture.fill(renderer); });
