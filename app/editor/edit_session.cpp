@@ -270,7 +270,7 @@ EditResult EditSession<D>::resample_now(const WorkControl& control) {
   Phases phases(control, 1);
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
-    if (!phases.next("resampling")) return false;
+    if (!phases.next(kResamplingPhase)) return false;
     add_stats(result, surface_->resample_only());
     result.resamples = 1;
     return true;
