@@ -7,9 +7,11 @@
 
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/picture_input.hpp"
+#include "app/render_arguments.hpp"
 #include "app/terminal_progress.hpp"
+#include "core/surface/spacing_band.hpp"
 #include "render/headless.hpp"
-#include "render/picture.hpp"
 
 namespace amls::app {
 
@@ -68,7 +70,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--normals", options->normals, "draw each point's normal as a line 2 h long (blue)");
   cmd->add_option("--color", options->color,
                   "uniform (sand), normal (n * 0.5 + 0.5 as RGB) or quality (each point's nearest-neighbour spacing "
-                  "in units of h on a viridis ramp from 0.3 h, violet, to 1.5 h, yellow)")
+                  "in units of h on a viridis ramp from " + spacing_band_text(kSpacingBandLow) + " h, violet, to " +
+                      spacing_band_text(kSpacingBandHigh) + " h, yellow)")
       ->check(CLI::IsMember({"uniform", "normal", "quality"}))
       ->capture_default_str();
   cmd->add_option("--step", options->step,
@@ -136,6 +139,8 @@ void add_render_command(CLI::App& app) {
       return load_picture(options->input, with_progress);
     }();
     for (const std::string& warning : picture.warnings) std::cerr << "amls: warning: " << warning << "\n";
+    if (picture.dimension == 2 && view)
+      throw std::invalid_argument("--view is for 3D inputs; a 2D input is always seen from above, framed to fit");
     RenderJob job = picture_job(picture, size, view, render);
     job.supersample = options->supersample;
     render_to_png(options->out, job, [&](SplatRenderer& renderer) { picture.fill(renderer); });

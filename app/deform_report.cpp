@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <ostream>
+#include <string>
+
+#include "core/surface/spacing_band.hpp"
 
 namespace amls::app {
 
@@ -10,6 +13,10 @@ namespace {
 nlohmann::json spacing_json(const SpacingStats& s) {
   return {{"min", s.min}, {"median", s.median}, {"max", s.max}};
 }
+
+// The band's bounds as they appear in report keys and lines: "0.3h", "1.5h".
+const std::string kBelow = spacing_band_text(kSpacingBandLow) + "h";
+const std::string kAbove = spacing_band_text(kSpacingBandHigh) + "h";
 
 nlohmann::json timings_json(const PhaseTimings& t) {
   return {{"normals", t.normals}, {"function", t.function}, {"resample", t.resample},
@@ -45,8 +52,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
   j["spacing_h"] = spacing_json(r.spacing_h);
   j["spacing_frames"] = r.frames_measured;
   j["spacing_outside"] = {{"points", r.spacing_points},
-                          {"below_0.3h", r.spacing_below},
-                          {"above_1.5h", r.spacing_above},
+                          {"below_" + kBelow, r.spacing_below},
+                          {"above_" + kAbove, r.spacing_above},
                           {"fraction", r.spacing_points > 0 ? static_cast<double>(r.spacing_below + r.spacing_above) /
                                                                   static_cast<double>(r.spacing_points)
                                                             : 0.0}};
@@ -71,8 +78,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
                            {"points", s.points},
                            {"resampled", s.resampled},
                            {"spacing_h", spacing_json(s.spacing_h)},
-                           {"spacing_below_0.3h", s.spacing_below},
-                           {"spacing_above_1.5h", s.spacing_above},
+                           {"spacing_below_" + kBelow, s.spacing_below},
+                           {"spacing_above_" + kAbove, s.spacing_above},
                            {"failed_normal_fits", s.failed_normal_fits},
                            {"timings_s", timings_json(s.timings)}};
     if (s.probed) step["probe"] = {{"holes", s.holes}, {"max_h", s.probe_max_h}};
@@ -96,8 +103,8 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
                 r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured,
                 r.resample ? "resampled " : "", r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
   out << line;
-  std::snprintf(line, sizeof line, "spacing outside [0.3 h, 1.5 h]: %zu below, %zu above, of %zu measured (%.3f %%)\n",
-                r.spacing_below, r.spacing_above, r.spacing_points,
+  std::snprintf(line, sizeof line, "spacing outside [%g h, %g h]: %zu below, %zu above, of %zu measured (%.3f %%)\n",
+                kSpacingBandLow, kSpacingBandHigh, r.spacing_below, r.spacing_above, r.spacing_points,
                 r.spacing_points > 0 ? 100.0 * static_cast<double>(r.spacing_below + r.spacing_above) /
                                            static_cast<double>(r.spacing_points)
                                      : 0.0);

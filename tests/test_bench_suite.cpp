@@ -1,7 +1,6 @@
 #include <doctest/doctest.h>
 
 #include "core/run/bench_suite.hpp"
-#include "core/util/process_memory.hpp"
 
 using namespace amls;
 
@@ -15,9 +14,4 @@ TEST_CASE("bench: one step on a sampled sphere keeps about the requested number 
   CHECK(c.points_per_second() > 0.0);
   CHECK(c.peak_memory_mib > 0.0);
   CHECK(c.threads == 2);
-}
-
-TEST_CASE("bench: the peak-memory counter can be reset between cases") {
-  CHECK(reset_peak_memory());
-  CHECK(peak_memory_mib() > 0.0);
 }

@@ -206,6 +206,41 @@ TEST_CASE("without resampling a step only deforms, so the points spread apart") 
   CHECK(x_range(session.points()).second == doctest::Approx(2.0).epsilon(0.01));
 }
 
+TEST_CASE("the undo history is capped by bytes: the newest states that fit, and always the newest one") {
+  const InitialShape shape = make_circle(1.0, 250, 0.024);
+  // One state of this circle: its 250 points with normals, about 8 kB.
+  const std::size_t state = 250 * 2 * sizeof(Vec<2>);
+  auto undos = [](EditSession<2>& session) {
+    int n = 0;
+    while (session.undo()) ++n;
+    return n;
+  };
+  {
+    EditSession<2> session(shape, 1, 3 * state + state / 2);  // room for three states
+    for (int k = 0; k < 10; ++k) session.add_handle(Vec<2>(0.1 * k, 0.0));
+    CHECK(undos(session) == 3);
+    CHECK(session.handles().size() == 7);  // back three of the ten additions
+    // Redo brings the three back; a redo's state counts against the same budget.
+    int redos = 0;
+    while (session.redo()) ++redos;
+    CHECK(redos == 3);
+    CHECK(session.handles().size() == 10);
+    CHECK(undos(session) == 3);
+  }
+  {
+    EditSession<2> session(shape, 1, 1);  // no room at all: the newest state is kept anyway
+    session.add_handle(Vec<2>(0.0, 0.0));
+    session.add_handle(Vec<2>(0.5, 0.0));
+    CHECK(undos(session) == 1);
+    CHECK(session.handles().size() == 1);
+  }
+  {
+    EditSession<2> session(shape, 1);  // the default budget holds hundreds of such states
+    for (int k = 0; k < 150; ++k) session.add_handle(Vec<2>(0.001 * k, 0.0));
+    CHECK(undos(session) == 150);
+  }
+}
+
 TEST_CASE("handles: removing and adding are undoable, a bad index is refused") {
   EditSession<2> session = circle_with_two_handles();
   CHECK_THROWS_AS(session.remove_handle(2), std::out_of_range);

@@ -179,16 +179,48 @@ TEST_CASE("a parameter change stops a step inside a phase - the state is as befo
   }
 }
 
-TEST_CASE("the worker shuts down cleanly while a step runs") {
+TEST_CASE("the worker shuts down cleanly while a step runs: the step is cancelled inside its phase") {
+  // The drag's first step has three phases: 0 resamples the loaded points, 1
+  // deforms them, 2 resamples the deformed points. The worker is held inside
+  // phase 0 until its destructor has begun; the step must then stop there.
+  EditorWorker* target = nullptr;
+  std::atomic<bool> in_phase{false}, closing{false};
+  std::atomic<int> polls_while_closing{0}, later_phase_polls{0};
+  std::shared_ptr<const Snapshot> last;  // written on the worker thread, read after it is joined
+  WorkerOptions options;  // one pool thread: the polls come in order
+  options.on_poll = [&] {
+    if (!closing) {
+      const WorkerStatus status = target->status();
+      if (status.activity != "resampling" || status.phase != 0) return;
+      in_phase = true;
+      while (!closing) std::this_thread::sleep_for(1ms);
+    }
+    // Every poll from here on asks after the shutdown began.
+    ++polls_while_closing;
+    if (target->status().phase > 0) ++later_phase_polls;
+  };
+  options.on_publish = [&] { last = target->snapshot(); };
   const auto begin = std::chrono::steady_clock::now();
   {
-    EditorWorker worker;
+    EditorWorker worker(options);
+    target = &worker;
     worker.post(heavy_sphere());
     worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
     drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 5);
-    REQUIRE(wait_for_phase(worker, "resampling", 0));
+    const auto deadline = std::chrono::steady_clock::now() + kPatience;
+    while (!in_phase && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(1ms);
+    REQUIRE(in_phase);
+    closing = true;
   }  // the destructor stops the step inside its phase, puts the surface back and joins
   CHECK(std::chrono::steady_clock::now() - begin < kPatience);
+  // The step kept polling after the close, heard it, and stopped: no later
+  // phase began, the step is counted as cancelled and none was taken.
+  CHECK(polls_while_closing.load() >= 1);
+  CHECK(later_phase_polls.load() == 0);
+  REQUIRE(last != nullptr);
+  CHECK(last->cancelled == 1);
+  CHECK(last->steps == 0);
+  CHECK(last->recorded_steps == 0);
 }
 
 TEST_CASE("export writes the current point set - a failed export leaves the previous file intact") {

@@ -1,4 +1,5 @@
-// `amls render`'s path (render/picture.hpp) on small files, rendered headless (OSMesa).
+// `amls render`'s path (app/picture_input.hpp, app/render_arguments.hpp,
+// render/picture.hpp) on small files, rendered headless (OSMesa).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -8,12 +9,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/picture_input.hpp"
+#include "app/render_arguments.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/scene.hpp"
-#include "core/geometry/shapes.hpp"
 #include "render/headless.hpp"
 #include "core/geometry/sample_spacing.hpp"
-#include "render/picture.hpp"
 #include "scene_fixtures.hpp"
 #include "temp_dir.hpp"
 

@@ -1,25 +1,18 @@
 #include "app/editor/edit_session.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "core/deform/mls_deformation.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
+#include "core/run/settle.hpp"
 
 namespace amls::editor {
 
 namespace {
-
-template <int D>
-PointSet<D> from_3d(const PointSet<3>& points) {
-  if constexpr (D == 2) {
-    return to_2d(points);
-  } else {
-    return points;
-  }
-}
 
 // The shape's source, if the shape has dimension D.
 template <int D>
@@ -27,13 +20,6 @@ const SceneShape<D>& source_of(const InitialShape& shape) {
   if (const SceneShape<D>* source = std::get_if<SceneShape<D>>(&shape.source)) return *source;
   throw std::invalid_argument("a " + std::to_string(shape.dimension()) + "D shape in a " + std::to_string(D) +
                               "D session");
-}
-
-template <int D>
-std::vector<Vec<D>> handles_from_3d(const std::vector<Vec<3>>& handles) {
-  std::vector<Vec<D>> out;
-  for (const Vec<3>& h : handles) out.push_back(h.template head<D>());
-  return out;
 }
 
 void add_stats(EditResult& result, const StepStats& stats) {
@@ -84,12 +70,13 @@ class Phases {
 }  // namespace
 
 template <int D>
-EditSession<D>::EditSession(const InitialShape& shape, int threads)
+EditSession<D>::EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes)
     : threads_(threads),
-      initial_{from_3d<D>(shape.points), handles_from_3d<D>(shape.handles), shape.settings, false,
+      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), shape.settings, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
-      recording_(initial_.recording) {
+      recording_(initial_.recording),
+      undo_budget_(undo_bytes) {
   validate(settings_);
   surface_ = make_surface(settings_);
   restore(initial_);
@@ -126,10 +113,35 @@ void EditSession<D>::restore(const State& state) {
 }
 
 template <int D>
+std::size_t EditSession<D>::State::bytes() const {
+  std::size_t total =
+      sizeof(State) + (points.positions.size() + points.normals.size() + handles.size()) * sizeof(Vec<D>);
+  for (const RecordedStep<D>& step : recording.steps())
+    total += sizeof(step) + (step.from.size() + step.to.size()) * sizeof(Vec<D>);
+  return total;
+}
+
+template <int D>
 void EditSession<D>::push_undo() {
-  undo_.push_back(current_state());
-  if (undo_.size() > kMaxUndo) undo_.pop_front();
+  push_back_undo(current_state());
   redo_.clear();
+}
+
+template <int D>
+void EditSession<D>::push_back_undo(State state) {
+  undo_bytes_ += state.bytes();
+  undo_.push_back(std::move(state));
+  while (undo_.size() > 1 && undo_bytes_ > undo_budget_) pop_undo(false);
+}
+
+template <int D>
+void EditSession<D>::pop_undo(bool newest) {
+  State& state = newest ? undo_.back() : undo_.front();
+  undo_bytes_ -= state.bytes();
+  if (newest)
+    undo_.pop_back();
+  else
+    undo_.pop_front();
 }
 
 template <int D>
@@ -180,7 +192,7 @@ template <int D>
 bool EditSession<D>::cancel_drag() {
   if (undo_.empty()) return false;
   restore(undo_.back());
-  undo_.pop_back();
+  pop_undo(true);
   return true;
 }
 
@@ -208,28 +220,28 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
   const ResamplePolicy& policy = settings_.policy;
   const std::size_t k = recording_.steps().size();
   // The phases of settling the points before step `step`: measuring them (`auto`, after step 0), resampling.
-  auto settle_phases = [&](std::size_t step) {
-    return (policy.kind == ResamplePolicy::Kind::automatic && step > 0 ? 1 : 0) + 1;
-  };
+  auto settle_phases = [&](std::size_t step) { return (policy_measures(policy, step) ? 1 : 0) + 1; };
   Phases phases(control, (settle_first ? settle_phases(k) : 0) + 1 + (resample ? settle_phases(k + 1) : 0));
   // Settles the points before step `step`; false if the edit must stop.
-  auto settle = [&](std::size_t step, bool& resampled) {
-    if (settle_phases(step) > 1 && !phases.next("checking the sampling")) return false;
-    resampled = policy.resample_now(step, surface_->points(), grid().spacing(), surface_->pool());
-    if (!resampled) return true;
-    if (!phases.next("resampling")) return false;
-    add_stats(result, surface_->resample_only());
-    ++result.resamples;
+  auto settle_points = [&](std::size_t step, bool& resampled) {
+    const std::optional<Settling> settled =
+        settle(*surface_, policy, step, [&](const char* phase) { return phases.next(phase); });
+    if (!settled) return false;
+    resampled = settled->resampled;
+    if (resampled) {
+      add_stats(result, settled->stats);
+      ++result.resamples;
+    }
     return true;
   };
   bool resampled_first = false;
   bool resampled_after = false;
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
-    if (settle_first && !settle(k, resampled_first)) return false;
+    if (settle_first && !settle_points(k, resampled_first)) return false;
     if (!phases.next("deforming")) return false;
     add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
-    return !resample || settle(k + 1, resampled_after);
+    return !resample || settle_points(k + 1, resampled_after);
   });
   if (!finished) {
     if (phases.started()) roll_back(std::move(before));
@@ -255,7 +267,7 @@ EditResult EditSession<D>::resample_now(const WorkControl& control) {
   Phases phases(control, 1);
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
-    if (!phases.next("resampling")) return false;
+    if (!phases.next(kResamplingPhase)) return false;
     add_stats(result, surface_->resample_only());
     result.resamples = 1;
     return true;
@@ -323,22 +335,22 @@ void EditSession<D>::set_resampling(bool enabled, const ResamplePolicy& policy) 
 }
 
 template <int D>
-bool EditSession<D>::travel(std::deque<State>& from, std::deque<State>& to) {
-  if (from.empty()) return false;
-  to.push_back(current_state());
-  restore(from.back());
-  from.pop_back();
+bool EditSession<D>::undo() {
+  if (undo_.empty()) return false;
+  redo_.push_back(current_state());
+  restore(undo_.back());
+  pop_undo(true);
   return true;
 }
 
 template <int D>
-bool EditSession<D>::undo() {
-  return travel(undo_, redo_);
-}
-
-template <int D>
 bool EditSession<D>::redo() {
-  return travel(redo_, undo_);
+  if (redo_.empty()) return false;
+  State now = current_state();
+  restore(redo_.back());
+  redo_.pop_back();
+  push_back_undo(std::move(now));
+  return true;
 }
 
 template <int D>

@@ -45,9 +45,14 @@ class EditSession {
  public:
   static constexpr int dimension = D;
 
+  // The undo history keeps the newest states that fit in this many bytes
+  // (and always the newest one): a few at a million points, hundreds on a
+  // small shape.
+  static constexpr std::size_t kDefaultUndoBytes = std::size_t{256} << 20;
+
   // Throws std::invalid_argument if the shape does not have dimension D, or
   // its settings are out of range.
-  EditSession(const InitialShape& shape, int threads);
+  EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes = kDefaultUndoBytes);
 
   const PointSet<D>& points() const { return surface_->points(); }
   const std::vector<Vec<D>>& handles() const { return handles_; }
@@ -98,19 +103,22 @@ class EditSession {
     SurfaceSettings settings;  // only h, Delta / h and the variant are restored
     bool settled = false;
     SessionRecording<D> recording;
+    // What the state holds in memory, about: its points, handles and recorded steps.
+    std::size_t bytes() const;
   };
-  static constexpr std::size_t kMaxUndo = 100;
   // set_grid refuses a spacing that would resample the surface into more points than this.
   static constexpr double kMaxExpectedPoints = 5e6;
 
   std::unique_ptr<DeformingSurface<D>> make_surface(const SurfaceSettings& settings) const;
   State current_state() const;
   void restore(const State& state);
+  // Makes the current state an undo point, and forgets the redo states.
   void push_undo();
+  // Appends to the undo states, dropping the oldest while they exceed the budget.
+  void push_back_undo(State state);
+  void pop_undo(bool newest);
   // After a stopped edit: the surface holds `before` again.
   void roll_back(PointSet<D> before);
-  // Undo and redo: the state now goes onto `to`, the newest of `from` comes back.
-  bool travel(std::deque<State>& from, std::deque<State>& to);
   EditResult resample_now(const WorkControl& control);
 
   int threads_;
@@ -124,6 +132,8 @@ class EditSession {
   bool settled_ = false;
   SessionRecording<D> recording_;
   std::deque<State> undo_, redo_;
+  std::size_t undo_budget_;
+  std::size_t undo_bytes_ = 0;  // of undo_'s states
   std::uint64_t version_ = 0;
   std::uint64_t normals_version_ = ~std::uint64_t{0};  // the version whose pseudo-normals are computed
 };

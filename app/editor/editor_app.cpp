@@ -67,9 +67,11 @@ EditorApp::EditorApp(const EditorOptions& options)
   else
     post(command::LoadFile{options.input});
   const Viewport vp = window_.viewport();
-  log_.line("ready gl=\"" + window_.gl_description() + "\" scale=" + std::to_string(window_.ui_scale()) +
-            " framebuffer=" + std::to_string(vp.width) + "x" + std::to_string(vp.height) +
-            " threads=" + std::to_string(worker.threads));
+  log_.line([&] {
+    return "ready gl=\"" + window_.gl_description() + "\" scale=" + std::to_string(window_.ui_scale()) +
+           " framebuffer=" + std::to_string(vp.width) + "x" + std::to_string(vp.height) +
+           " threads=" + std::to_string(worker.threads);
+  });
 }
 
 EditorApp::~EditorApp() {
@@ -85,7 +87,7 @@ int EditorApp::run() {
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
   while (!window_.should_close() && !stop_requested) frame();
-  log_.line("exit frames=" + std::to_string(frames_));
+  log_.line([&] { return "exit frames=" + std::to_string(frames_); });
   return 0;
 }
 
@@ -128,9 +130,11 @@ void EditorApp::frame() {
   window_.present();
 
   ++frames_;
-  log_.line("frame " + std::to_string(frames_) + " busy=" + (status.busy ? "1" : "0") +
-            " gen=" + std::to_string(snapshot.generation) + " handles=" + std::to_string(view_.handles().size()) +
-            " dragging=" + (view_.dragging() ? "1" : "0"));
+  log_.line([&] {
+    return "frame " + std::to_string(frames_) + " busy=" + (status.busy ? "1" : "0") +
+           " gen=" + std::to_string(snapshot.generation) + " handles=" + std::to_string(view_.handles().size()) +
+           " dragging=" + (view_.dragging() ? "1" : "0");
+  });
   log_view();
   for (auto it = background_.begin(); it != background_.end();) {
     if (it->wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
@@ -138,7 +142,7 @@ void EditorApp::frame() {
       continue;
     }
     const Message m = it->get();
-    log_.line(std::string("message level=") + level_name(m.level) + " " + m.text);
+    log_.line([&] { return std::string("message level=") + level_name(m.level) + " " + m.text; });
     ui_.tell(m);
     it = background_.erase(it);
   }
@@ -146,7 +150,7 @@ void EditorApp::frame() {
 
 void EditorApp::take_messages() {
   for (Message& m : worker_->take_messages()) {
-    log_.line(std::string("message level=") + level_name(m.level) + " " + m.text);
+    log_.line([&] { return std::string("message level=") + level_name(m.level) + " " + m.text; });
     ui_.tell(std::move(m));
   }
 }
@@ -200,10 +204,12 @@ void EditorApp::take_snapshot() {
     ui_.seen = next->settings;
     ui_.seen_any = true;
   }
-  log_.line("snapshot gen=" + std::to_string(next->generation) + " processed=" + std::to_string(next->processed) +
-            " load=" + std::to_string(next->load_id) + " dimension=" + std::to_string(next->dimension) +
-            " points=" + std::to_string(next->points.size()) + " steps=" + std::to_string(next->steps) +
-            " variant=" + to_string(next->settings.variant) + " resamples=" + std::to_string(next->resamples));
+  log_.line([&] {
+    return "snapshot gen=" + std::to_string(next->generation) + " processed=" + std::to_string(next->processed) +
+           " load=" + std::to_string(next->load_id) + " dimension=" + std::to_string(next->dimension) +
+           " points=" + std::to_string(next->points.size()) + " steps=" + std::to_string(next->steps) +
+           " variant=" + to_string(next->settings.variant) + " resamples=" + std::to_string(next->resamples);
+  });
   shown_ = std::move(next);
 }
 
@@ -212,7 +218,7 @@ void EditorApp::process_input() {
   const Viewport viewport = window_.viewport();
   const glm::vec2 scale = window_.pixels_per_unit();
   for (const std::string& path : window_.take_dropped_paths()) {
-    log_.line("drop " + path);
+    log_.line([&] { return "drop " + path; });
     post(command::LoadFile{path});
   }
   for (const InputEvent& event : window_.take_events()) {
@@ -226,9 +232,11 @@ void EditorApp::process_input() {
                         event.type == InputEvent::Type::scroll;
     if (starts && io.WantCaptureMouse) continue;
     if (event.type == InputEvent::Type::button)
-      log_.line("button " + std::to_string(event.code) + " action=" + std::to_string(event.action) +
-                " mods=" + std::to_string(event.mods) + " at " + std::to_string(event.position.x) + "," +
-                std::to_string(event.position.y));
+      log_.line([&] {
+        return "button " + std::to_string(event.code) + " action=" + std::to_string(event.action) +
+               " mods=" + std::to_string(event.mods) + " at " + std::to_string(event.position.x) + "," +
+               std::to_string(event.position.y);
+      });
     view_.on_event(event, viewport, scale);
   }
   view_.update(viewport, io.KeyShift, io.WantCaptureMouse);
@@ -237,7 +245,9 @@ void EditorApp::process_input() {
 void EditorApp::on_key(const InputEvent& event) {
   const bool ctrl = (event.mods & GLFW_MOD_CONTROL) != 0, shift = (event.mods & GLFW_MOD_SHIFT) != 0;
   const bool repeat = event.action == GLFW_REPEAT;
-  log_.line("key " + std::to_string(event.code) + " mods=" + std::to_string(event.mods) + (repeat ? " repeat" : ""));
+  log_.line([&] {
+    return "key " + std::to_string(event.code) + " mods=" + std::to_string(event.mods) + (repeat ? " repeat" : "");
+  });
   if (repeat && event.code != GLFW_KEY_Z && event.code != GLFW_KEY_Y) return;  // only undo/redo repeat
   switch (event.code) {
     case GLFW_KEY_S:
@@ -325,7 +335,8 @@ void EditorApp::write_screenshot() {
   const std::string path = ui_.screenshot_path.empty() ? timestamped_png() : ui_.screenshot_path;
   try {
     Image image = read_framebuffer(window_.viewport());
-    log_.line("screenshot " + path + " " + std::to_string(image.width) + "x" + std::to_string(image.height));
+    log_.line(
+        [&] { return "screenshot " + path + " " + std::to_string(image.width) + "x" + std::to_string(image.height); });
     background_.push_back(std::async(std::launch::async, [image = std::move(image), path] {
       try {
         write_png(path, image);
@@ -340,7 +351,7 @@ void EditorApp::write_screenshot() {
 }
 
 void EditorApp::export_points() {
-  log_.line("export " + ui_.export_path);
+  log_.line([&] { return "export " + ui_.export_path; });
   post(command::Export{ui_.export_path});
   if (worker_->status().busy) ui_.tell({Message::Level::info, "Exporting once the running step is done..."});
 }
@@ -352,7 +363,7 @@ void EditorApp::export_mesh() {
 }
 
 void EditorApp::save_scene() {
-  log_.line("save-scene " + ui_.scene_path);
+  log_.line([&] { return "save-scene " + ui_.scene_path; });
   post(command::SaveScene{ui_.scene_path});
 }
 

@@ -23,14 +23,6 @@ Vec<3> to_3d_vector(const Vec<D>& v) {
 }
 
 template <int D>
-std::vector<Vec<D>> from_3d_vectors(const std::vector<Vec<3>>& in) {
-  std::vector<Vec<D>> out;
-  out.reserve(in.size());
-  for (const Vec<3>& v : in) out.push_back(v.template head<D>());
-  return out;
-}
-
-template <int D>
 PointSet<3> points_3d(const PointSet<D>& points) {
   if constexpr (D == 3) {
     return points;
@@ -153,118 +145,119 @@ void EditorWorker::note_result(const EditResult& result) {
   step_times_.push_back(Clock::now());
 }
 
+template <typename Edit>
+void EditorWorker::on_session(Edit&& edit) {
+  const bool loaded = std::visit(Overloaded{[](std::monostate&) { return false; },
+                                            [&](auto& session) {
+                                              edit(*session);
+                                              return true;
+                                            }},
+                                 session_);
+  if (!loaded) message(Message::Level::warning, "Nothing is loaded yet: open a file or a shape first");
+}
+
+WorkControl EditorWorker::control_for(std::uint64_t epoch) {
+  return WorkControl{[this, epoch] {
+                       if (options_.on_poll) options_.on_poll();
+                       return queue_.cancel_epoch() != epoch;
+                     },
+                     [this](const char* name, int index, int count) { set_phase(name, index, count); }};
+}
+
+void EditorWorker::load_file(const std::string& path) {
+  try {
+    start(load_initial_shape(path, options_.threads));
+  } catch (const std::exception& e) {
+    // The readers' messages start with the file's path (and name the key in a scene): say it once.
+    const std::string why = e.what();
+    message(Message::Level::error,
+            "Cannot open " + (why.rfind(path, 0) == 0 ? why : path + ": " + why) +
+                (std::holds_alternative<std::monostate>(session_) ? "" : " (the current surface is kept)"));
+  }
+}
+
+void EditorWorker::export_points(const std::string& path) {
+  on_session([&](auto& s) {
+    try {
+      write_point_set(path, s.points(), format_from_extension(path));
+      message(Message::Level::info, "Exported " + describe_count(s.points().size(), "points") + " to " + path);
+    } catch (const std::exception& e) {
+      message(Message::Level::error, std::string("Export failed (any previous file is intact): ") + e.what());
+    }
+  });
+}
+
+void EditorWorker::export_mesh(const std::string& path) {
+  on_session([&](auto& s) {
+    try {
+      const MeshExport mesh = export_surface_mesh(path, s.evaluable_surface(), s.settings().variant, s.pool());
+      message(mesh.topology.closed() ? Message::Level::info : Message::Level::warning,
+              "Exported a mesh of " + mesh.summary() + " to " + path);
+    } catch (const std::exception& e) {
+      message(Message::Level::error, std::string("Mesh export failed (any previous file is intact): ") + e.what());
+    }
+  });
+}
+
+void EditorWorker::save_scene(const std::string& path) {
+  on_session([&](auto& s) {
+    try {
+      const std::string name = std::filesystem::path(path).stem().string();
+      write_scene(path, recorded_scene(s.recording(), path, name));
+      const std::string note = s.recording().exact() ? "" : " - not an exact replay: " + s.recording().inexact_reason();
+      message(s.recording().exact() ? Message::Level::info : Message::Level::warning,
+              "Saved the scene " + path + " (" + describe_count(s.recording().steps().size(), "steps") + ")" + note);
+    } catch (const std::exception& e) {
+      message(Message::Level::error, std::string("Save Scene failed: ") + e.what());
+    }
+  });
+}
+
 void EditorWorker::execute(const QueuedCommand& queued) {
-  const std::uint64_t epoch = queued.epoch;
-  const WorkControl control{[this, epoch] {
-                              if (options_.on_poll) options_.on_poll();
-                              return queue_.cancel_epoch() != epoch;
-                            },
-                            [this](const char* name, int index, int count) { set_phase(name, index, count); }};
-  // Runs `edit(session)` on the session of either dimension; false if there is none.
-  auto with_session = [&](auto&& edit) {
-    return std::visit(Overloaded{[](std::monostate&) { return false; },
-                                 [&](auto& session) {
-                                   edit(*session);
-                                   return true;
-                                 }},
-                      session_);
-  };
-  auto require_session = [&](auto&& edit) {
-    if (!with_session(edit)) message(Message::Level::warning, "Nothing is loaded yet: open a file or a shape first");
-  };
+  const WorkControl control = control_for(queued.epoch);
   using namespace command;
   std::visit(
       Overloaded{
-          [&](const LoadFile& c) {
-            try {
-              start(load_initial_shape(c.path, options_.threads));
-            } catch (const std::exception& e) {
-              // The readers' messages start with the file's path (and name the key in a scene): say it once.
-              const std::string why = e.what();
-              message(Message::Level::error,
-                      "Cannot open " + (why.rfind(c.path, 0) == 0 ? why : c.path + ": " + why) +
-                          (std::holds_alternative<std::monostate>(session_) ? "" : " (the current surface is kept)"));
-            }
-          },
+          [&](const LoadFile& c) { load_file(c.path); },
           [&](const LoadShape& c) {
             start(c.dimension == 3 ? make_sphere(c.radius, c.points, c.spacing)
                                    : make_circle(c.radius, c.points, c.spacing));
           },
           [&](const AddHandle& c) {
-            require_session([&](auto& s) { s.add_handle(c.position.head<std::decay_t<decltype(s)>::dimension>()); });
+            on_session([&](auto& s) { s.add_handle(c.position.head<std::decay_t<decltype(s)>::dimension>()); });
           },
-          [&](const RemoveHandle& c) { require_session([&](auto& s) { s.remove_handle(c.index); }); },
-          [&](const BeginDrag&) { require_session([&](auto& s) { s.begin_drag(); }); },
+          [&](const RemoveHandle& c) { on_session([&](auto& s) { s.remove_handle(c.index); }); },
+          [&](const BeginDrag&) { on_session([&](auto& s) { s.begin_drag(); }); },
           [&](const MoveHandles& c) {
-            require_session([&](auto& s) {
+            on_session([&](auto& s) {
               constexpr int D = std::decay_t<decltype(s)>::dimension;
               if (c.positions.size() != s.handles().size()) {
                 message(Message::Level::warning, "A handle move was dropped: the handles changed meanwhile");
                 return;
               }
-              note_result(s.move_handles(from_3d_vectors<D>(c.positions), control));
+              note_result(s.move_handles(from_3d<D>(c.positions), control));
             });
           },
-          [&](const CancelDrag&) { require_session([&](auto& s) { s.cancel_drag(); }); },
-          [&](const SetVariant& c) {
-            require_session([&](auto& s) { note_result(s.set_variant(c.variant, control)); });
-          },
+          [&](const CancelDrag&) { on_session([&](auto& s) { s.cancel_drag(); }); },
+          [&](const SetVariant& c) { on_session([&](auto& s) { note_result(s.set_variant(c.variant, control)); }); },
           [&](const SetGrid& c) {
-            require_session([&](auto& s) { note_result(s.set_grid(c.spacing, c.radius_factor, control)); });
+            on_session([&](auto& s) { note_result(s.set_grid(c.spacing, c.radius_factor, control)); });
           },
-          [&](const SetDeformation& c) { require_session([&](auto& s) { s.set_deformation(c.kind, c.alpha); }); },
-          [&](const SetResampling& c) { require_session([&](auto& s) { s.set_resampling(c.enabled, c.policy); }); },
+          [&](const SetDeformation& c) { on_session([&](auto& s) { s.set_deformation(c.kind, c.alpha); }); },
+          [&](const SetResampling& c) { on_session([&](auto& s) { s.set_resampling(c.enabled, c.policy); }); },
           [&](const SetCurveTracing& c) { curve_enabled_ = c.enabled; },
           [&](const Undo&) {
-            require_session([&](auto& s) {
+            on_session([&](auto& s) {
               if (!s.undo()) message(Message::Level::info, "Nothing to undo");
             });
           },
           [&](const Redo&) {
-            require_session([&](auto& s) {
+            on_session([&](auto& s) {
               if (!s.redo()) message(Message::Level::info, "Nothing to redo");
             });
           },
-          [&](const Reset&) { require_session([&](auto& s) { s.reset(); }); },
-          [&](const Export& c) {
-            require_session([&](auto& s) {
-              try {
-                write_point_set(c.path, s.points(), format_from_extension(c.path));
-                message(Message::Level::info,
-                        "Exported " + describe_count(s.points().size(), "points") + " to " + c.path);
-              } catch (const std::exception& e) {
-                message(Message::Level::error, std::string("Export failed (any previous file is intact): ") + e.what());
-              }
-            });
-          },
-          [&](const ExportMesh& c) {
-            require_session([&](auto& s) {
-              try {
-                const MeshExport mesh =
-                    export_surface_mesh(c.path, s.evaluable_surface(), s.settings().variant, s.pool());
-                message(mesh.topology.closed() ? Message::Level::info : Message::Level::warning,
-                        "Exported a mesh of " + mesh.summary() + " to " + c.path);
-              } catch (const std::exception& e) {
-                message(Message::Level::error,
-                        std::string("Mesh export failed (any previous file is intact): ") + e.what());
-              }
-            });
-          },
-          [&](const SaveScene& c) {
-            require_session([&](auto& s) {
-              try {
-                const std::string name = std::filesystem::path(c.path).stem().string();
-                write_scene(c.path, recorded_scene(s.recording(), c.path, name));
-                const std::string note =
-                    s.recording().exact() ? "" : " - not an exact replay: " + s.recording().inexact_reason();
-                message(s.recording().exact() ? Message::Level::info : Message::Level::warning,
-                        "Saved the scene " + c.path + " (" + describe_count(s.recording().steps().size(), "steps") +
-                            ")" + note);
-              } catch (const std::exception& e) {
-                message(Message::Level::error, std::string("Save Scene failed: ") + e.what());
-              }
-            });
-          }},
+          [&](const Reset&) { on_session([&](auto& s) { s.reset(); }); },
+          [&](const Export& c) { export_points(c.path); }, [&](const ExportMesh& c) { export_mesh(c.path); }, [&](const SaveScene& c) { save_scene(c.path); }},
       queued.command);
 }
 

@@ -61,6 +61,15 @@ class EditorWorker {
 
   void run();
   void execute(const QueuedCommand& queued);
+  // How running work under the command of `epoch` polls for a stop and reports its phases.
+  WorkControl control_for(std::uint64_t epoch);
+  // Runs `edit(session)` on the session of either dimension, or says that nothing is loaded.
+  template <typename Edit>
+  void on_session(Edit&& edit);
+  void load_file(const std::string& path);
+  void export_points(const std::string& path);
+  void export_mesh(const std::string& path);
+  void save_scene(const std::string& path);
   void start(const InitialShape& shape);
   void note_result(const EditResult& result);
   void publish(std::uint64_t processed);

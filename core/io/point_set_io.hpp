@@ -81,6 +81,25 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override = 
 PointSet<2> to_2d(const PointSet<3>& points);
 PointSet<3> to_3d(const PointSet<2>& points);
 
+// A set held in 3D as a set of dimension D: to_2d() for D = 2, itself for D = 3.
+template <int D>
+PointSet<D> from_3d(PointSet<3> points) {
+  if constexpr (D == 2) {
+    return to_2d(points);
+  } else {
+    return points;
+  }
+}
+
+// The first D coordinates of each vector (handles and the like, held in 3D).
+template <int D>
+std::vector<Vec<D>> from_3d(const std::vector<Vec<3>>& vectors) {
+  std::vector<Vec<D>> out;
+  out.reserve(vectors.size());
+  for (const Vec<3>& v : vectors) out.push_back(v.template head<D>());
+  return out;
+}
+
 // Throws std::invalid_argument for non-finite values, a normal array of
 // another size than the positions, or a zero normal among non-zero ones; and
 // std::runtime_error naming `path` when the file cannot be written.

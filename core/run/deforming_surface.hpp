@@ -50,6 +50,7 @@ class DeformingSurface {
 
   const AmlsSurface<D>& surface() const { return surface_; }
   const PointSet<D>& points() const { return surface_.points(); }
+  const Grid<D>& grid() const { return surface_.grid(); }
   Variant variant() const { return variant_; }
   void set_variant(Variant variant) { variant_ = variant; }
   ThreadPool& pool() { return pool_; }

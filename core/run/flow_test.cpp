@@ -7,16 +7,14 @@
 
 #include "core/deform/flow_deformation.hpp"
 #include "core/util/process_memory.hpp"
+#include "core/run/growth_limit.hpp"
 #include "core/run/ray_tracing_surface.hpp"
+#include "core/run/settle.hpp"
 #include "core/geometry/shapes.hpp"
-#include "core/util/stopwatch.hpp"
 
 namespace amls {
 
 namespace {
-
-// A run is broken when its point set vanishes or grows past this many times its start.
-constexpr double kMaxGrowth = 20.0;
 
 void validate(const FlowTestConfig& c) {
   if (c.grid < 8) throw std::invalid_argument("--grid must be at least 8, got " + std::to_string(c.grid));
@@ -53,9 +51,8 @@ void run_flow(Loop& loop, std::shared_ptr<const VelocityField<D>> field, double 
   for (std::size_t k = 0; k < report.steps_planned; ++k) {
     const double t0 = period * static_cast<double>(k) / static_cast<double>(report.steps_planned);
     const double t1 = period * static_cast<double>(k + 1) / static_cast<double>(report.steps_planned);
-    Stopwatch clock;
-    const bool resample = config.resample.resample_now(k, loop.points(), 1.0 / config.grid, loop.pool());
-    report.quality_seconds += clock.lap();
+    // The paper's loop resamples within the step, before deforming.
+    const bool resample = policy_resamples(config.resample, k, loop, report.quality_seconds);
     const auto stats = loop.step(flow, t0, t1, resample);
     report.resamples += resample ? 1 : 0;
     timings += stats.timings;
@@ -70,9 +67,9 @@ void run_flow(Loop& loop, std::shared_ptr<const VelocityField<D>> field, double 
       report.status_reason = "the point set vanished at step " + std::to_string(k + 1);
       break;
     }
-    if (static_cast<double>(n) > kMaxGrowth * static_cast<double>(report.points_initial)) {
+    if (grew_past_limit(n, report.points_initial)) {
       report.broken = true;
-      report.status_reason = "the point set grew past 20x its start at step " + std::to_string(k + 1);
+      report.status_reason = growth_breakdown(k + 1);
       break;
     }
   }

@@ -36,6 +36,7 @@
 #include "core/surface/metrics.hpp"
 #include "core/resample/resample_policy.hpp"
 #include "core/run/scene.hpp"
+#include "core/run/scene_samples.hpp"
 
 namespace amls {
 
@@ -122,21 +123,6 @@ struct SceneRunReport {
   std::vector<SceneStepRecord> per_step;
 };
 
-// The initial shape's samples (and, with a positive `tracers_per_point`, the
-// tracers) of a scene.
-template <int D>
-struct SceneShapeSamples {
-  PointSet<D> points;
-  PointSet<D> tracers;
-  std::string source;
-  std::vector<std::string> warnings;
-};
-
-// Throws std::runtime_error naming the scene file for a shape file that
-// cannot be read, is empty or has the wrong dimension.
-template <int D>
-SceneShapeSamples<D> sample_scene_shape(const Scene<D>& scene, double tracers_per_point, int threads = 1);
-
 // Called with (step, points) for every frame: step 0 is the start.
 template <int D>
 using FrameSink = std::function<void(std::size_t, const PointSet<D>&)>;
@@ -148,8 +134,6 @@ template <int D>
 SceneRunReport run_scene(const Scene<D>& scene, const SceneRunOptions& options, const FrameSink<D>& frames = {},
                          const SceneProgress& progress = {}, const FrameSink<D>& exact = {});
 
-extern template SceneShapeSamples<2> sample_scene_shape<2>(const Scene<2>&, double, int);
-extern template SceneShapeSamples<3> sample_scene_shape<3>(const Scene<3>&, double, int);
 extern template SceneRunReport run_scene<2>(const Scene<2>&, const SceneRunOptions&, const FrameSink<2>&,
                                             const SceneProgress&, const FrameSink<2>&);
 extern template SceneRunReport run_scene<3>(const Scene<3>&, const SceneRunOptions&, const FrameSink<3>&,

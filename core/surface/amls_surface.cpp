@@ -90,7 +90,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
         const double s2 = u.squaredNorm();
         if (s2 > 1.0) continue;
         if (listed) listed->push_back(id);
-        if (filter && points_.normals[id].dot(own) <= 0.0) continue;
+        if (filter && !agrees(points_.normals[id], own)) continue;
         fit.add(u, weight_of_squared_ratio(s2));
       }
       if (listed) neighbours_.finish(i, block);
@@ -116,29 +116,14 @@ void AmlsSurface<D>::require_ready() const {
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
-  require_ready();
-  const double inverse_r2 = 1.0 / (radius_ * radius_);
-  // Two passes over the index, as in evaluate_in(): the orientation reference, then the fit.
-  Vec<D> reference = Vec<D>::Zero();
-  double nearest = radius_ * radius_;
-  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
-    const double d2 = (q - x).squaredNorm();
-    if (d2 < nearest) {
-      nearest = d2;
-      reference = pseudo_normals_[id];
-    }
-  });
-  const bool filter = parameters_.orientation_filter;
-  const bool corrected = !offsets_.empty();
-  GradientFit<D> fit;
-  index_.for_each_within(x, radius_, [&](std::uint32_t id, const Vec<D>& q) {
-    const Vec<D> d = q - x;
-    const double dd = d.squaredNorm();
-    const double w = weight_of_squared_ratio(dd * inverse_r2);
-    if (w <= 0.0 || (filter && pseudo_normals_[id].dot(reference) <= 0.0)) return;
-    fit.add(d, dd, pseudo_normals_[id], w, corrected ? offsets_[id] : 0.0);
-  });
-  return fit.solve(parameters_.min_weight);
+  // Reused per thread: evaluate() runs on pool threads, and allocating at
+  // every call would cost more than the fit.
+  thread_local std::vector<std::uint32_t> ids;
+  thread_local Neighbourhood<D> neighbourhood;
+  ids.clear();
+  gather_ids(x, x, radius_, ids);
+  select(ids, x, radius_, neighbourhood);
+  return evaluate_in(neighbourhood, x);
 }
 
 template <int D>
@@ -185,7 +170,7 @@ template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
   const double r2 = radius_ * radius_;
   const std::size_t n = neighbourhood.positions.size();
-  const bool filter = parameters_.orientation_filter && !neighbourhood.consistent;
+  const bool filter = filters(neighbourhood);
   // The orientation reference: the pseudo-normal of the point nearest to y.
   // (Recomputing distances in the second pass is cheaper than storing them.)
   // Tracked by index with selects, not branches: which neighbour is nearer
@@ -209,8 +194,8 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
     for (std::size_t k = 0; k < n; ++k) {
       const Vec<D> d = neighbourhood.positions[k] - y;
       const double dd = d.squaredNorm();
-      const bool agrees = !filter || neighbourhood.normals[k].dot(reference) > 0.0;
-      add(k, d, dd, weight_of_squared_ratio(dd * inverse_r2) * static_cast<double>(agrees));
+      const bool kept = !filter || agrees(neighbourhood.normals[k], reference);
+      add(k, d, dd, weight_of_squared_ratio(dd * inverse_r2) * static_cast<double>(kept));
     }
   };
   if (neighbourhood.offsets.empty())
@@ -226,7 +211,7 @@ template <int D>
 void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
                                    const std::array<Vec<D>, kCubeCorners>& corners,
                                    std::array<Evaluation<D>, kCubeCorners>& out) const {
-  if (parameters_.orientation_filter && !neighbourhood.consistent) {
+  if (filters(neighbourhood)) {
     // Each corner has its own orientation reference: one at a time.
     for (int v = 0; v < kCubeCorners; ++v) out[v] = evaluate_in(neighbourhood, corners[v]);
   } else if (neighbourhood.offsets.empty()) {
@@ -304,7 +289,7 @@ PrattFit<D> AmlsSurface<D>::pratt_fit_in(const Neighbourhood<D>& neighbourhood, 
   const bool filter = parameters_.orientation_filter;
   PrattFit<D> fit;
   for (std::size_t k = 0; k < neighbourhood.positions.size(); ++k) {
-    if (filter && neighbourhood.normals[k].dot(carried) <= 0.0) continue;
+    if (filter && !agrees(neighbourhood.normals[k], carried)) continue;
     const Vec<D> u = (neighbourhood.positions[k] - p) * inverse_radius;
     fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
   }

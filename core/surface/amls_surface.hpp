@@ -98,6 +98,11 @@ class AmlsSurface {
   // The bias correction's offset of every point, empty when it is off.
   const std::vector<double>& offsets() const { return offsets_; }
 
+  // F, in three parts: gather_ids() lists the points near a region, select()
+  // copies those near a position into a Neighbourhood, and evaluate_in() or
+  // evaluate_cube() fits over it. The resampler gathers once per brick and
+  // selects once per cube; evaluate() does all three for one position.
+
   // F(x) and the fit's gradient, over all points within Delta of x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
 
@@ -122,6 +127,14 @@ class AmlsSurface {
   PrattFit<D> pratt_fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& p, const Vec<D>& carried) const;
 
  private:
+  // The orientation filter's test (AmlsParameters::orientation_filter), for
+  // Step 1 and Step 2 alike: a neighbour counts when its normal agrees with
+  // the reference.
+  static bool agrees(const Vec<D>& normal, const Vec<D>& reference) { return normal.dot(reference) > 0.0; }
+  // Whether F over `neighbourhood` needs the filter: not when every normal there agrees.
+  bool filters(const Neighbourhood<D>& neighbourhood) const {
+    return parameters_.orientation_filter && !neighbourhood.consistent;
+  }
   void require_ready() const;
   template <bool kCorrected>
   void evaluate_cube_with(const Neighbourhood<D>& neighbourhood, const std::array<Vec<D>, kCubeCorners>& corners,

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "core/geometry/point_index.hpp"
-#include "core/surface/pratt_fit.hpp"
 #include "core/math/weight.hpp"
+#include "core/surface/pratt_fit.hpp"
 
 namespace amls {
 
@@ -45,10 +45,8 @@ std::string position_text(const double* x, int d) {
   return text.str();
 }
 
-}  // namespace
-
 template <int D>
-NormalEstimation estimate_normals(PointSet<D>& points, double radius, ThreadPool& pool) {
+void check_input(const PointSet<D>& points, double radius) {
   const std::size_t n = points.size();
   if (n < static_cast<std::size_t>(D + 1))
     throw std::invalid_argument("normal estimation needs at least " + std::to_string(D + 1) + " points, got " +
@@ -58,78 +56,108 @@ NormalEstimation estimate_normals(PointSet<D>& points, double radius, ThreadPool
   for (std::size_t i = 0; i < n; ++i)
     if (!points.positions[i].allFinite())
       throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
-  const double widest = radius * static_cast<double>(1 << kWidenings);
-  PointIndex<D> index;
-  index.build(points.positions, points.positions.front(), radius);
+}
 
-  NormalEstimation report;
-  report.points = n;
-  std::vector<Vec<D>> normals(n);
-  std::vector<std::vector<std::uint32_t>> graph(n);
-  std::vector<char> failed(n, 0), widened(n, 0);
-  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
-    std::vector<std::pair<double, std::uint32_t>> near;
-    std::vector<Vec<D>> positions;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec<D>& p = points.positions[i];
-      bool fitted = false;
-      for (int w = 0; w <= kWidenings && !fitted; ++w) {
-        const double r = radius * static_cast<double>(1 << w);
-        near.clear();
-        positions.clear();
-        index.for_each_within(p, r, [&](std::uint32_t id, const Vec<D>& q) {
-          near.emplace_back((q - p).squaredNorm(), id);
-          positions.push_back(q);
-        });
-        if (near.size() < static_cast<std::size_t>(D + 1)) continue;
-        // The least-spread direction seeds the fit and orients it arbitrarily; the tree fixes signs.
-        const Vec<D> guess = least_spread_direction<D>(positions);
-        normals[i] = guess;
-        PrattFit<D> fit;
-        for (const Vec<D>& q : positions) {
-          const Vec<D> u = (q - p) / r;
-          fit.add(u, weight_of_squared_ratio(u.squaredNorm()));
-        }
-        fitted = fit.solve(guess, normals[i]) == FitStatus::ok;
-        widened[i] = w > 0;
+// Step 1's fit at each point without a carried normal: the least-spread
+// direction of the neighbours within the radius seeds a Pratt fit, the radius
+// doubling up to kWidenings times while too few neighbours are in reach. One
+// per thread: it keeps its neighbour lists between points.
+template <int D>
+class PointFitter {
+ public:
+  PointFitter(const PointSet<D>& points, const PointIndex<D>& index, double radius)
+      : points_(points), index_(index), radius_(radius) {}
+
+  struct Result {
+    Vec<D> normal = Vec<D>::Zero();  // unoriented
+    bool failed = false;             // no fit: the least-spread direction of the nearest points
+    bool widened = false;            // fitted beyond the radius
+  };
+
+  // Fits point i and appends its kGraphNeighbours nearest others to `graph`.
+  Result fit(std::size_t i, std::vector<std::uint32_t>& graph) {
+    const Vec<D>& p = points_.positions[i];
+    Result result;
+    bool fitted = false;
+    for (int w = 0; w <= kWidenings && !fitted; ++w) {
+      const double r = radius_ * static_cast<double>(1 << w);
+      gather(p, r);
+      if (near_.size() < static_cast<std::size_t>(D + 1)) continue;
+      // The least-spread direction seeds the fit and orients it arbitrarily; the tree fixes signs.
+      const Vec<D> guess = least_spread_direction<D>(positions_);
+      result.normal = guess;
+      PrattFit<D> pratt;
+      for (const Vec<D>& q : positions_) {
+        const Vec<D> u = (q - p) / r;
+        pratt.add(u, weight_of_squared_ratio(u.squaredNorm()));
       }
-      if (!fitted) {
-        failed[i] = 1;
-        if (near.size() < static_cast<std::size_t>(D + 1)) {
-          // Nearly isolated even at the widest radius: its D + 1 nearest points, however far (rare, so by brute force).
-          near.clear();
-          for (std::size_t j = 0; j < n; ++j)
-            near.emplace_back((points.positions[j] - p).squaredNorm(), static_cast<std::uint32_t>(j));
-          const auto keep = std::min<std::size_t>(n, D + 2);
-          std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
-          near.resize(keep);
-          positions.clear();
-          for (const auto& entry : near) positions.push_back(points.positions[entry.second]);
-        }
-        normals[i] = least_spread_direction<D>(positions);
-      }
-      // The graph: the k nearest others.
-      std::sort(near.begin(), near.end());
-      for (const auto& [d2, id] : near) {
-        if (id == i) continue;
-        graph[i].push_back(id);
-        if (graph[i].size() == kGraphNeighbours<D>) break;
-      }
+      fitted = pratt.solve(guess, result.normal) == FitStatus::ok;
+      result.widened = w > 0;
     }
-  });
-  for (std::size_t i = 0; i < n; ++i) {
-    report.failed_fits += static_cast<std::size_t>(failed[i]);
-    report.widened += static_cast<std::size_t>(widened[i]);
+    if (!fitted) {
+      result.failed = true;
+      if (near_.size() < static_cast<std::size_t>(D + 1)) gather_nearest(p);
+      result.normal = least_spread_direction<D>(positions_);
+    }
+    std::sort(near_.begin(), near_.end());
+    for (const auto& [d2, id] : near_) {
+      if (id == i) continue;
+      graph.push_back(id);
+      if (graph.size() == kGraphNeighbours<D>) break;
+    }
+    return result;
   }
-  // Symmetric adjacency.
-  std::vector<std::vector<std::uint32_t>> adjacent(n);
-  for (std::size_t i = 0; i < n; ++i)
+
+ private:
+  // The points within r of p.
+  void gather(const Vec<D>& p, double r) {
+    near_.clear();
+    positions_.clear();
+    index_.for_each_within(p, r, [&](std::uint32_t id, const Vec<D>& q) {
+      near_.emplace_back((q - p).squaredNorm(), id);
+      positions_.push_back(q);
+    });
+  }
+
+  // Nearly isolated even at the widest radius: its D + 1 nearest points,
+  // however far (rare, so by brute force).
+  void gather_nearest(const Vec<D>& p) {
+    const std::size_t n = points_.size();
+    near_.clear();
+    for (std::size_t j = 0; j < n; ++j)
+      near_.emplace_back((points_.positions[j] - p).squaredNorm(), static_cast<std::uint32_t>(j));
+    const auto keep = std::min<std::size_t>(n, D + 2);
+    std::partial_sort(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(keep), near_.end());
+    near_.resize(keep);
+    positions_.clear();
+    for (const auto& entry : near_) positions_.push_back(points_.positions[entry.second]);
+  }
+
+  const PointSet<D>& points_;
+  const PointIndex<D>& index_;
+  double radius_;
+  std::vector<std::pair<double, std::uint32_t>> near_;  // (squared distance, id)
+  std::vector<Vec<D>> positions_;                       // of near_, in its order
+};
+
+// The graph's edges both ways.
+std::vector<std::vector<std::uint32_t>> symmetric(const std::vector<std::vector<std::uint32_t>>& graph) {
+  std::vector<std::vector<std::uint32_t>> adjacent(graph.size());
+  for (std::size_t i = 0; i < graph.size(); ++i)
     for (std::uint32_t j : graph[i]) {
       adjacent[i].push_back(j);
       adjacent[j].push_back(static_cast<std::uint32_t>(i));
     }
+  return adjacent;
+}
 
-  // Prim's tree from each part's highest point.
+// Orients `normals` along Prim's minimum spanning tree of the graph (weights
+// 1 - |n_i . n_j|), from each part's highest point, whose normal points up.
+// Counts the parts and the ambiguous tree edges in `report`.
+template <int D>
+void orient_along_tree(const PointSet<D>& points, const std::vector<std::vector<std::uint32_t>>& adjacent,
+                       std::vector<Vec<D>>& normals, NormalEstimation& report) {
+  const std::size_t n = points.size();
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -158,8 +186,10 @@ NormalEstimation estimate_normals(PointSet<D>& points, double radius, ThreadPool
         if (!done[k]) frontier.emplace(1.0 - std::abs(normals[j].dot(normals[k])), k, j);
     }
   }
-  points.normals = std::move(normals);
+}
 
+template <int D>
+void add_warnings(const PointSet<D>& points, double widest, NormalEstimation& report) {
   if (report.components > 1)
     report.warnings.push_back("the points fall into " + std::to_string(report.components) +
                               " separate parts (no neighbours between them); each part was oriented from its "
@@ -175,6 +205,38 @@ NormalEstimation estimate_normals(PointSet<D>& points, double radius, ThreadPool
                               std::to_string(widest) +
                               " for a sphere fit; their normals are the direction of least spread of their "
                               "nearest points");
+}
+
+}  // namespace
+
+template <int D>
+NormalEstimation estimate_normals(PointSet<D>& points, double radius, ThreadPool& pool) {
+  check_input(points, radius);
+  const std::size_t n = points.size();
+  PointIndex<D> index;
+  index.build(points.positions, points.positions.front(), radius);
+
+  NormalEstimation report;
+  report.points = n;
+  std::vector<Vec<D>> normals(n);
+  std::vector<std::vector<std::uint32_t>> graph(n);
+  std::vector<char> failed(n, 0), widened(n, 0);
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    PointFitter<D> fitter(points, index, radius);
+    for (std::size_t i = begin; i < end; ++i) {
+      const typename PointFitter<D>::Result fit = fitter.fit(i, graph[i]);
+      normals[i] = fit.normal;
+      failed[i] = fit.failed;
+      widened[i] = fit.widened;
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    report.failed_fits += static_cast<std::size_t>(failed[i]);
+    report.widened += static_cast<std::size_t>(widened[i]);
+  }
+  orient_along_tree(points, symmetric(graph), normals, report);
+  points.normals = std::move(normals);
+  add_warnings(points, radius * static_cast<double>(1 << kWidenings), report);
   return report;
 }
 

@@ -1,0 +1,26 @@
+#include "core/run/settle.hpp"
+
+namespace amls {
+
+bool policy_measures(const ResamplePolicy& policy, std::size_t step) {
+  return policy.kind == ResamplePolicy::Kind::automatic && step > 0;
+}
+
+template <int D>
+std::optional<Settling> settle(DeformingSurface<D>& surface, const ResamplePolicy& policy, std::size_t step,
+                               const SettlePhaseGate& gate) {
+  Settling out;
+  if (gate && policy_measures(policy, step) && !gate(kCheckingPhase)) return std::nullopt;
+  out.resampled = policy_resamples(policy, step, surface, out.quality_seconds);
+  if (!out.resampled) return out;
+  if (gate && !gate(kResamplingPhase)) return std::nullopt;
+  out.stats = surface.resample_only();
+  return out;
+}
+
+template std::optional<Settling> settle<2>(DeformingSurface<2>&, const ResamplePolicy&, std::size_t,
+                                           const SettlePhaseGate&);
+template std::optional<Settling> settle<3>(DeformingSurface<3>&, const ResamplePolicy&, std::size_t,
+                                           const SettlePhaseGate&);
+
+}  // namespace amls
