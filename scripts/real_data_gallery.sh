@@ -7,13 +7,13 @@
 set -euo pipefail
 build=$(cd "$1" && pwd)
 amls=$build/app/amls
-data=$build/tests/realdata
+data=$build/cgal_data
 work=$build/tests/realdata/gallery
 images=$(cd "$(dirname "$0")/.." && pwd)/docs/images/real
 mkdir -p "$work" "$images"
 files=(data/points_3/kitten.xyz data/points_3/hippo1.ply data/points_3/oni.ply data/points_3/sphere_20k.xyz
-       data/points_3/building.ply data/points_3/radar.xyz meshes/bunny00.obj meshes/armadillo.obj
-       meshes/elephant.obj meshes/fandisk.obj)
+       data/points_3/building.ply data/points_3/radar.xyz data/meshes/bunny00.off data/meshes/armadillo.off
+       data/meshes/elephant.off data/meshes/fandisk.off)
 echo "| file | in the file | h | points out | out / in | input covered | output on the input | time | peak memory |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for f in "${files[@]}"; do
