@@ -58,7 +58,7 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
   char text[400];
   std::snprintf(text, sizeof text,
                 "%zu steps: %.1f ms median, %.1f ms max per step, %.0f points resampled per step; after: spacing "
-                "%.2f/%.2f/%.2f h (min/median/max), exact shape to surface %.3f/%.3f h (mean/max), %zu holes in %zu "
+                "%.2f/%.2f/%.2f h (min/median/max), exact shape to surface %.2g/%.2g h (mean/max), %zu holes in %zu "
                 "probes",
                 r.step_seconds.size(), r.median_ms(), r.max_ms(), r.mean_resampled(), r.spacing_h.min,
                 r.spacing_h.median, r.spacing_h.max, r.exact_to_surface_mean_h, r.exact_to_surface_max_h, r.holes,

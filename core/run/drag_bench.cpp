@@ -6,6 +6,7 @@
 
 #include "core/deform/mls_deformation.hpp"
 #include "core/geometry/shapes.hpp"
+#include "core/run/local_deforming_surface.hpp"
 #include "core/util/stopwatch.hpp"
 
 namespace amls {
@@ -90,28 +91,52 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   report.h = h;
   const double pull = config.pull_h * h;
   const Grid<3> grid(Vec<3>::Zero(), h);
-  DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
-  surface.set_points(sample_sphere(kCenter, kRadius, config.points));
-  surface.resample_only();
-  report.points_initial = surface.points().size();
   PointSet<3> tracers = config.tracers > 0 ? sample_sphere(kCenter, kRadius, config.tracers) : PointSet<3>{};
-  ThreadPool& pool = surface.pool();
-  for (std::size_t k = 0; k < config.steps; ++k) {
-    const MlsDeformation<3> deformation(drag_handles(kCenter, kRadius, pull, k),
-                                        drag_handles(kCenter, kRadius, pull, k + 1));
-    Stopwatch clock;
-    const StepStats stats = surface.step(deformation, 0.0, 1.0);
-    report.step_seconds.push_back(clock.lap());
-    report.resampled.push_back(stats.resample.inserted);
-    report.timings += stats.timings;
-    if (!tracers.empty()) deformation.apply(tracers, pool);
-  }
-  surface.resample_only();
-  report.points_final = surface.points().size();
-  if (!tracers.empty()) {
-    report.spacing_h = spacing_stats(surface.points(), h);
-    surface.refresh_normals();
-    measure_tracers(surface.surface(), tracers.positions, pool, report);
+  auto deformation = [&](std::size_t k) {
+    return MlsDeformation<3>(drag_handles(kCenter, kRadius, pull, k), drag_handles(kCenter, kRadius, pull, k + 1));
+  };
+  // The final points' quality, on a surface of their own.
+  auto measure = [&](const PointSet<3>& points, ThreadPool& pool) {
+    report.points_final = points.size();
+    if (tracers.empty()) return;
+    report.spacing_h = spacing_stats(points, h);
+    AmlsSurface<3> surface(grid, AmlsParameters{});
+    surface.set_points(points);
+    surface.hash_points(pool);
+    surface.update_normals(pool);
+    measure_tracers(surface, tracers.positions, pool, report);
+  };
+  if (config.resample == DragResample::always) {
+    DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
+    surface.set_points(sample_sphere(kCenter, kRadius, config.points));
+    surface.resample_only();
+    report.points_initial = surface.points().size();
+    for (std::size_t k = 0; k < config.steps; ++k) {
+      const MlsDeformation<3> map = deformation(k);
+      Stopwatch clock;
+      const StepStats stats = surface.step(map, 0.0, 1.0);
+      report.step_seconds.push_back(clock.lap());
+      report.resampled.push_back(stats.resample.inserted);
+      report.timings += stats.timings;
+      if (!tracers.empty()) map.apply(tracers, surface.pool());
+    }
+    surface.resample_only();
+    measure(surface.points(), surface.pool());
+  } else {
+    LocalDeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
+    surface.set_points(sample_sphere(kCenter, kRadius, config.points));
+    surface.resample_all();
+    report.points_initial = surface.points().size();
+    for (std::size_t k = 0; k < config.steps; ++k) {
+      const MlsDeformation<3> map = deformation(k);
+      Stopwatch clock;
+      const LocalStepStats stats = surface.step(map);
+      report.step_seconds.push_back(clock.lap());
+      report.resampled.push_back(stats.resample.inserted);
+      report.timings += stats.timings;
+      if (!tracers.empty()) map.apply(tracers, surface.pool());
+    }
+    measure(surface.points(), surface.pool());
   }
   return report;
 }
