@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <stdexcept>
 
 #include "core/util/flat_hash_map.hpp"
@@ -78,10 +80,12 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   const double delta = parameters_.radius_factor * h;
   const Grid<D> cells(grid_.origin(), cell_size_);
   std::vector<IVec<D>> flagged;
+  std::size_t flagged_points = 0;
   {
     FlatHashMap<std::uint8_t> seen;
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (!(strain[i] > options_.strain_limit)) continue;
+      ++flagged_points;
       const IVec<D> c = cells.cell_of(points.positions[i]);
       if (seen.try_emplace(Grid<D>::key(c)).second) flagged.push_back(c);
     }
@@ -94,13 +98,18 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   const std::int64_t walked = region + rings_for(2.0 * h);
   const std::int64_t support = walked + rings_for(4.0 * delta + 2.0 * h);
   if (support >= kOutside) throw std::logic_error("local resampling: the support's rings do not fit a byte");
-  Rings<D> rings(cells, flagged, support);
-  stats.region_cells = rings.cells_within(static_cast<std::uint8_t>(region));
+  // With every point flagged (a start, or a whole-surface resample) every
+  // point is in R: no rings to grow.
+  const bool everything = flagged_points == points.size();
+  const std::optional<Rings<D>> rings =
+      everything ? std::nullopt : std::optional<Rings<D>>(std::in_place, cells, flagged, support);
+  auto ring_of = [&](const Vec<D>& p) { return rings ? rings->ring(p) : std::uint8_t{0}; };
+  stats.region_cells = rings ? rings->cells_within(static_cast<std::uint8_t>(region)) : flagged.size();
 
   // Each point's ring, and the support's points (in the points' order).
   std::vector<std::uint8_t> ring(points.size());
   pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t i = begin; i < end; ++i) ring[i] = rings.ring(points.positions[i]);
+    for (std::size_t i = begin; i < end; ++i) ring[i] = ring_of(points.positions[i]);
   });
   PointSet<D> support_points;
   for (std::size_t i = 0; i < points.size(); ++i)
@@ -115,7 +124,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
 
   std::vector<Vec<D>> walk;  // in the surface's (cell) order
   for (const Vec<D>& p : surface.points().positions)
-    if (rings.ring(p) <= walked) walk.push_back(p);
+    if (ring_of(p) <= walked) walk.push_back(p);
   resampler_.update_function(surface, walk, pool);
   stats.function_seconds = clock.lap();
 
@@ -143,7 +152,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   }
   for (std::size_t k = 0; k < fresh.size(); ++k) {
     const Vec<D>& q = fresh.positions[k];
-    if (rings.ring(q) > region) continue;
+    if (ring_of(q) > region) continue;
     if (claimed.find(Grid<D>::key(nearest_vertex(q)))) {
       ++stats.dropped_at_seam;
       continue;
