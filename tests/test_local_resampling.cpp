@@ -83,7 +83,8 @@ void check_seam(const SeamCase<D>& c) {
   REQUIRE(c.stats.inserted > 0);
   REQUIRE(c.stats.replaced > 0);
   CHECK(c.kept_unchanged == c.kept);
-  INFO("points " << c.out.size() << ", kept " << c.kept << ", seam " << c.seam.size() << ", inside " << c.inside.size());
+  INFO("points " << c.out.size() << ", kept " << c.kept << ", seam " << c.seam.size() << ", inside "
+                 << c.inside.size());
   REQUIRE(c.seam.size() >= 4);  // a point on each side of each seam, at least
   REQUIRE(c.inside.size() > 4);
   const auto [in_lo, in_hi] = std::minmax_element(c.inside.begin(), c.inside.end());
@@ -96,7 +97,9 @@ void check_seam(const SeamCase<D>& c) {
 
 }  // namespace
 
-TEST_CASE("local resampling, 2D: kept points unchanged, new points on the circle, spacing across the seam within the band inside") {
+TEST_CASE(
+    "local resampling, 2D: kept points unchanged, new points on the circle, spacing across the seam within the band "
+    "inside") {
   const Vec<2> center(0.5, 0.5);
   const Grid<2> grid = Grid<2>::unit(128);
   const SeamCase<2> c = seam_case<2>(sample_circle(center, 0.3, 400), center, grid);

@@ -38,8 +38,8 @@ TEST_CASE("MLS lattice: positions within the tolerance of the exact map, normals
   const MlsLatticeStats stats = apply_on_lattice(map, fast, &strain, options, one);
   apply_on_lattice(map, fast2, &strain2, options, two);
   CHECK_FALSE(stats.fell_back);
-  CHECK(stats.refined_cells > 0);                   // near the handles
-  CHECK(stats.exact_points < start.size() / 10);    // most points interpolate
+  CHECK(stats.refined_cells > 0);                 // near the handles
+  CHECK(stats.exact_points < start.size() / 10);  // most points interpolate
   double worst = 0.0, worst_normal = 0.0;
   for (std::size_t i = 0; i < start.size(); ++i) {
     worst = std::max(worst, (fast.positions[i] - exact.positions[i]).norm());

@@ -68,7 +68,8 @@ struct Box {
  private:
   std::size_t index_in(const IVec<D>& v, std::int64_t extra) const {
     std::size_t index = 0;
-    for (int a = D - 1; a >= 0; --a) index = index * static_cast<std::size_t>(cells[a] + extra) + static_cast<std::size_t>(v[a]);
+    for (int a = D - 1; a >= 0; --a)
+      index = index * static_cast<std::size_t>(cells[a] + extra) + static_cast<std::size_t>(v[a]);
     return index;
   }
 };
@@ -100,8 +101,8 @@ float strain_of(const std::array<const Sample<D>*, 1 << D>& corners, double spac
   for (int v = 0; v < (1 << D); ++v)
     for (int a = 0; a < D; ++a)
       if ((v >> a) & 1)
-        jacobian.col(a) += corners[static_cast<std::size_t>(v)]->position -
-                           corners[static_cast<std::size_t>(v & ~(1 << a))]->position;
+        jacobian.col(a) +=
+            corners[static_cast<std::size_t>(v)]->position - corners[static_cast<std::size_t>(v & ~(1 << a))]->position;
   jacobian /= spacing * static_cast<double>(1 << (D - 1));
   return static_cast<float>(0.5 * (jacobian.transpose() * jacobian - Mat<D>::Identity()).norm());
 }

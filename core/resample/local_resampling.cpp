@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "core/util/flat_hash_map.hpp"
 #include "core/util/stopwatch.hpp"

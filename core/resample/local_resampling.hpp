@@ -47,10 +47,10 @@ struct LocalResampleStats {
   std::size_t inserted = 0;         // new points in R
   std::size_t dropped_at_seam = 0;  // new points in R dropped for a kept point's claimed vertex
   NormalStats normals;
-  ResampleStats resample;           // of the resampler's run over the walked vertices
+  ResampleStats resample;  // of the resampler's run over the walked vertices
   double normals_seconds = 0.0;
   double function_seconds = 0.0;
-  double resample_seconds = 0.0;    // the resampler's walk and the splice
+  double resample_seconds = 0.0;  // the resampler's walk and the splice
 };
 
 template <int D>

@@ -86,8 +86,7 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   DragBenchReport report;
   report.config = config;
   // As bench_sphere_step: a grid-resampled sphere has about 0.83 area / h^2 points.
-  const double h =
-      std::sqrt(0.83 * 4.0 * std::numbers::pi * kRadius * kRadius / static_cast<double>(config.points));
+  const double h = std::sqrt(0.83 * 4.0 * std::numbers::pi * kRadius * kRadius / static_cast<double>(config.points));
   report.h = h;
   const double pull = config.pull_h * h;
   const Grid<3> grid(Vec<3>::Zero(), h);

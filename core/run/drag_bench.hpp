@@ -42,9 +42,9 @@ struct DragBenchReport {
   double h = 0.0;
   std::size_t points_initial = 0;
   std::size_t points_final = 0;
-  std::vector<double> step_seconds;      // per step: map, resampling and index
-  std::vector<std::size_t> resampled;    // per step: points made by the resampler
-  PhaseTimings timings;                  // summed over the steps
+  std::vector<double> step_seconds;    // per step: map, resampling and index
+  std::vector<std::size_t> resampled;  // per step: points made by the resampler
+  PhaseTimings timings;                // summed over the steps
   double median_ms() const;
   double max_ms() const;
   double mean_resampled() const;
@@ -52,7 +52,7 @@ struct DragBenchReport {
   SpacingStats spacing_h;
   double exact_to_surface_mean_h = 0.0;  // mean |F| / h at the tracers where F is defined
   double exact_to_surface_max_h = 0.0;
-  std::size_t holes = 0;                 // tracers where F is undefined
+  std::size_t holes = 0;  // tracers where F is undefined
   std::size_t probes = 0;
 };
 

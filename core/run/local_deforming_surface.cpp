@@ -17,8 +17,8 @@ constexpr double kLatticeSpacing = 8.0;
 }  // namespace
 
 template <int D>
-LocalDeformingSurface<D>::LocalDeformingSurface(const Grid<D>& grid, const AmlsParameters& parameters,
-                                                Variant variant, int threads, const LocalResampleOptions& options)
+LocalDeformingSurface<D>::LocalDeformingSurface(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant,
+                                                int threads, const LocalResampleOptions& options)
     : grid_(grid),
       resampler_(grid, parameters, variant),
       lattice_{kLatticeSpacing * grid.spacing(), 0.0, 4, false},
