@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/geometry/point_index.hpp"
 #include "core/util/flat_hash_map.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -137,6 +138,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
     return v;
   };
   FlatHashMap<std::uint8_t> claimed;
+  std::vector<Vec<D>> seam_points;
   PointSet<D> out;
   std::vector<float> out_strain;
   out.reserve(points.size());
@@ -146,14 +148,24 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
       ++stats.replaced;
       continue;
     }
-    if (ring[i] <= walked) claimed.try_emplace(Grid<D>::key(nearest_vertex(points.positions[i])));
+    if (ring[i] <= walked) {
+      claimed.try_emplace(Grid<D>::key(nearest_vertex(points.positions[i])));
+      seam_points.push_back(points.positions[i]);
+    }
     out.add(points.positions[i], points.normals[i]);
     out_strain.push_back(strain[i]);
   }
+  PointIndex<D> seam_index;
+  seam_index.build(seam_points, grid_.origin(), 0.5 * h);
+  auto crowds = [&](const Vec<D>& q) {
+    bool near = false;
+    seam_index.for_each_within(q, 0.5 * h, [&](std::uint32_t, const Vec<D>&) { near = true; });
+    return near;
+  };
   for (std::size_t k = 0; k < fresh.size(); ++k) {
     const Vec<D>& q = fresh.positions[k];
     if (ring_of(q) > region) continue;
-    if (claimed.find(Grid<D>::key(nearest_vertex(q)))) {
+    if (claimed.find(Grid<D>::key(nearest_vertex(q))) || crowds(q)) {
       ++stats.dropped_at_seam;
       continue;
     }

@@ -21,8 +21,10 @@
 //
 // At the seam a kept point claims its nearest grid vertex: a crossing whose
 // nearer edge end is a claimed vertex counts as HAVECLOSEPOINT there and is
-// dropped, so new points neither crowd kept ones nor leave gaps against them
-// (as two new points, they are then at least about h / 2 apart).
+// dropped, as is one within h / 2 of a kept point (a kept point off the grid
+// can be that close to a crossing whose nearer end it does not claim). So new
+// points keep from kept ones the h / 2 that the resampler keeps between its
+// own points.
 //
 // Inside R, F and the crossings are those of a whole-surface resample of the
 // same points: only which points are replaced differs.
@@ -45,7 +47,7 @@ struct LocalResampleStats {
   std::size_t replaced = 0;         // old points in R, removed
   std::size_t support = 0;          // points fitted (Update_Normals)
   std::size_t inserted = 0;         // new points in R
-  std::size_t dropped_at_seam = 0;  // new points in R dropped for a kept point's claimed vertex
+  std::size_t dropped_at_seam = 0;  // new points in R dropped for a kept point's vertex or nearness
   NormalStats normals;
   ResampleStats resample;  // of the resampler's run over the walked vertices
   double normals_seconds = 0.0;
