@@ -234,6 +234,19 @@ def torus_tentacles():
                  {"type": "torus", "center": [0.0, 0.0, 0.0], "major_radius": big, "minor_radius": small}, 0.035, [{"handles": rounded(start), "targets": targets}])
 
 
+def drag_sphere():
+    """amls bench's drag (core/run/drag_bench.cpp) at 20,000 points: h from the same 0.83 points per area / h^2."""
+    centre, r, points = [0.5, 0.5, 0.5], 0.3, 20000
+    h = round(math.sqrt(0.83 * 4.0 * math.pi * r * r / points), 5)
+    start = [[0.5, 0.5, 0.5 - r], [0.5 + r, 0.5, 0.5], [0.5, 0.5 + r, 0.5], [0.5, 0.5, 0.5 + r]]
+    pulled = [list(p) for p in start]
+    pulled[3][2] += 40 * 0.5 * h
+    return scene(3, "drag_sphere", "The drag of amls bench (drag 200k, drag 1M) at 20,000 points: a sphere with three "
+                 "fixed handles (the bottom and two on the equator) and one at the top pulled outwards by h/2 per step "
+                 "for 40 steps.", {"type": "sphere", "center": centre, "radius": r, "points": points}, h,
+                 [{"handles": rounded(start), "targets": [{"steps": 40, "handles": rounded(pulled)}]}])
+
+
 def scene(dimension, name, description, shape, h, stages):
     """A scene with the settings every scene here shares: Delta = 3h, exact resampling, rigid MLS, alpha = 1."""
     return {
@@ -251,7 +264,8 @@ def scene(dimension, name, description, shape, h, stages):
 
 def main():
     os.makedirs(OUT, exist_ok=True)
-    for name, scene in (("clover2d", clover2d()), ("clover3d", clover3d()), ("torus_tentacles", torus_tentacles())):
+    for name, scene in (("clover2d", clover2d()), ("clover3d", clover3d()), ("torus_tentacles", torus_tentacles()),
+                         ("drag_sphere", drag_sphere())):
         path = os.path.join(OUT, name + ".json")
         text = json.dumps(scene, indent=2)
         # One line per point: [x, y] rather than a number per line.

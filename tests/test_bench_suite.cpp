@@ -1,6 +1,9 @@
 #include <doctest/doctest.h>
 
+#include <string>
+
 #include "core/run/bench_suite.hpp"
+#include "core/run/drag_bench.hpp"
 
 using namespace amls;
 
@@ -14,4 +17,28 @@ TEST_CASE("bench: one step on a sampled sphere keeps about the requested number 
   CHECK(c.points_per_second() > 0.0);
   CHECK(c.peak_memory_mib > 0.0);
   CHECK(c.threads == 2);
+}
+
+TEST_CASE("bench: the drag, resampled always or locally, keeps the surface whole and near the exact shape") {
+  for (const DragResample mode : {DragResample::always, DragResample::local}) {
+    DragBenchConfig config;
+    config.points = 6000;
+    config.threads = 2;
+    config.steps = 6;
+    config.pull_h = 3.0;  // hard enough that the local policy resamples near the pulled handle
+    config.tracers = 5000;
+    config.resample = mode;
+    const DragBenchReport r = run_drag_bench(config);
+    INFO(std::string(to_string(mode)) << ": distance mean " << r.exact_to_surface_mean_h << " max " << r.exact_to_surface_max_h
+                         << ", spacing " << r.spacing_h.min << "/" << r.spacing_h.max << ", resampled per step "
+                         << r.mean_resampled());
+    CHECK(r.step_seconds.size() == 6);
+    CHECK(r.holes == 0);
+    CHECK(r.exact_to_surface_max_h < 0.1);
+    CHECK(r.spacing_h.min > 0.3);
+    CHECK(r.spacing_h.max < 2.0);
+    CHECK(r.mean_resampled() > 0.0);
+    if (mode == DragResample::always) CHECK(r.mean_resampled() > 0.8 * static_cast<double>(r.points_initial));
+    if (mode == DragResample::local) CHECK(r.mean_resampled() < 0.5 * static_cast<double>(r.points_initial));
+  }
 }

@@ -39,20 +39,29 @@ constexpr const char* kFonts[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.t
 
 // The callbacks reach the window through GLFW's user pointer; ImGui's backend,
 // installed after them, calls them on (it chains to callbacks set before it).
+//
+// Buttons, wheel turns and keys carry the cursor where the events before them
+// left it, not glfwGetCursorPos(): on X11 that asks for the pointer's position
+// now, so after a slow frame a press followed by a quick move would be seen
+// where the move ended (a drag from a handle would orbit instead).
 struct WindowCallbacks {
   static void button(GLFWwindow* w, int button, int action, int mods) {
-    owner(w)->events_.push_back({InputEvent::Type::button, button, action, mods, cursor_of(w), {}});
+    EditorWindow* self = owner(w);
+    self->events_.push_back({InputEvent::Type::button, button, action, mods, self->cursor_, {}});
   }
   static void cursor(GLFWwindow* w, double x, double y) {
-    owner(w)->events_.push_back(
-        {InputEvent::Type::cursor, 0, 0, 0, {static_cast<float>(x), static_cast<float>(y)}, {}});
+    EditorWindow* self = owner(w);
+    self->cursor_ = {static_cast<float>(x), static_cast<float>(y)};
+    self->events_.push_back({InputEvent::Type::cursor, 0, 0, 0, self->cursor_, {}});
   }
   static void scroll(GLFWwindow* w, double dx, double dy) {
-    owner(w)->events_.push_back(
-        {InputEvent::Type::scroll, 0, 0, 0, cursor_of(w), {static_cast<float>(dx), static_cast<float>(dy)}});
+    EditorWindow* self = owner(w);
+    self->events_.push_back(
+        {InputEvent::Type::scroll, 0, 0, 0, self->cursor_, {static_cast<float>(dx), static_cast<float>(dy)}});
   }
   static void key(GLFWwindow* w, int key, int, int action, int mods) {
-    owner(w)->events_.push_back({InputEvent::Type::key, key, action, mods, cursor_of(w), {}});
+    EditorWindow* self = owner(w);
+    self->events_.push_back({InputEvent::Type::key, key, action, mods, self->cursor_, {}});
   }
   static void drop(GLFWwindow* w, int count, const char** paths) {
     for (int i = 0; i < count; ++i) owner(w)->drops_.emplace_back(paths[i]);
@@ -84,6 +93,7 @@ EditorWindow::EditorWindow(int width, int height, const std::string& title, floa
     throw std::runtime_error("cannot load the OpenGL functions");
   }
   glfwSetWindowUserPointer(window_, this);
+  cursor_ = cursor_of(window_);
   glfwSetMouseButtonCallback(window_, WindowCallbacks::button);
   glfwSetCursorPosCallback(window_, WindowCallbacks::cursor);
   glfwSetScrollCallback(window_, WindowCallbacks::scroll);

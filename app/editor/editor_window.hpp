@@ -67,6 +67,7 @@ class EditorWindow {
   bool fixed_scale_ = false;
   float pending_scale_ = 0.0f;  // a content-scale change to apply before the next frame
   std::vector<InputEvent> events_;
+  glm::vec2 cursor_{0.0f};  // where the last cursor event left the cursor (see WindowCallbacks)
   std::vector<std::string> drops_;
   bool imgui_ready_ = false;
 };

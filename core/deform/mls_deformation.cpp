@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,13 @@ constexpr double kAffineConditionFloor = 1e-10;
 constexpr double kRankOneFloor = 1e-10;
 // Below this 1 + cos(angle), two directions count as opposite.
 constexpr double kOppositeFloor = 1e-12;
+// The polar iteration (polar_rotation) runs where det K exceeds this fraction
+// of |K|_F^3 (the largest it can be is 3^{-3/2}, about 0.19), and stops when a
+// step changes X by less than this (squared, Frobenius): X is then orthogonal
+// to rounding.
+constexpr double kPolarDeterminantFloor = 1e-3;
+constexpr double kPolarConverged = 1e-28;
+constexpr int kPolarMaxSteps = 30;
 
 // cof(L) = det(L) L^{-T}, which exists even where L is singular.
 Mat<2> cofactor(const Mat<2>& m) {
@@ -106,6 +114,28 @@ RotationFit<3> fit_rotation(const Mat<3>& k) {
   return {u * svd.matrixV().transpose(), s(0) + s(1) + d * s(2)};
 }
 
+// The rotation of fit_rotation() by Newton's iteration for the polar factor,
+// X <- (g X + X^{-T} / g) / 2 with g = |det X|^{-1/3} (Higham's scaling),
+// which converges quadratically from K itself: a few dozen flops a step
+// against a Jacobi SVD's hundreds. Nothing when K is not well inside the
+// proper, full-rank case (det K <= 0 or small against |K|^3): the SVD's
+// handling of reflections and rank deficiency is needed there.
+std::optional<RotationFit<3>> polar_rotation(const Mat<3>& k) {
+  const double size = k.norm();
+  if (!(size > 0.0) || !(k.determinant() > kPolarDeterminantFloor * size * size * size)) return std::nullopt;
+  Mat<3> x = k;
+  for (int step = 0; step < kPolarMaxSteps; ++step) {
+    const Mat<3> c = cofactor(x);  // det(X) X^{-T}
+    const double det = x.row(0).dot(c.row(0));
+    const double g = 1.0 / std::cbrt(det);
+    const Mat<3> next = 0.5 * (g * x + c / (det * g));
+    const double change = (next - x).squaredNorm();
+    x = next;
+    if (change < kPolarConverged) return RotationFit<3>{x, (x.transpose() * k).trace()};
+  }
+  return std::nullopt;
+}
+
 // Section 2.1: L = (sum w_i q^_i p^_i^T)(sum w_i p^_i p^_i^T)^{-1}. False where
 // the moment matrix is too close to singular to invert.
 template <int D>
@@ -129,10 +159,12 @@ void check_time(double t) {
     throw std::invalid_argument("MLS deformation: time " + describe(t) + " is outside [0, 1]");
 }
 
-// The normal n carried by the local map L: L^{-T} n = cof(L) n / det L. The
-// cofactor form needs no inverse, so a singular L (handles collapsed onto a
-// plane) still gives a direction, and the sign of det L keeps the normal
-// pointing to where the outside went. Degenerate results keep the old normal.
+}  // namespace
+
+// L^{-T} n = cof(L) n / det L. The cofactor form needs no inverse, so a
+// singular L (handles collapsed onto a plane) still gives a direction, and the
+// sign of det L keeps the normal pointing to where the outside went.
+// Degenerate results keep the old normal.
 template <int D>
 Vec<D> carry_normal(const Mat<D>& linear, const Vec<D>& normal) {
   Vec<D> carried = cofactor(linear) * normal;
@@ -140,8 +172,6 @@ Vec<D> carry_normal(const Mat<D>& linear, const Vec<D>& normal) {
   const double length = carried.norm();
   return length > 0.0 && std::isfinite(length) ? Vec<D>(carried / length) : normal;
 }
-
-}  // namespace
 
 const char* to_string(MlsKind kind) {
   switch (kind) {
@@ -257,7 +287,13 @@ MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>&
 
   if (kind_ != MlsKind::affine || !fit_affine<D>(moments, covariance, local.linear)) {
     local.affine_fell_back = kind_ == MlsKind::affine;
-    const RotationFit<D> fit = fit_rotation(covariance);
+    RotationFit<D> fit;
+    if constexpr (D == 3) {
+      const std::optional<RotationFit<3>> polar = polar_ ? polar_rotation(covariance) : std::nullopt;
+      fit = polar ? *polar : fit_rotation(covariance);
+    } else {
+      fit = fit_rotation(covariance);
+    }
     local.linear = fit.rotation;
     // With every active p^_i zero there is nothing to scale: keep the rotation (here the identity).
     if (kind_ != MlsKind::rigid && spread > 0.0) local.linear *= fit.trace / spread;
@@ -318,6 +354,8 @@ std::vector<Vec<D>> MlsDeformation<D>::handles_at(double t) const {
   return handles;
 }
 
+template Vec<2> carry_normal<2>(const Mat<2>&, const Vec<2>&);
+template Vec<3> carry_normal<3>(const Mat<3>&, const Vec<3>&);
 template class MlsDeformation<2>;
 template class MlsDeformation<3>;
 

@@ -36,6 +36,11 @@ struct MlsLocalMap {
   bool affine_fell_back = false;
 };
 
+// The unit normal n carried by a local map's linear part L: L^{-T} n,
+// renormalised; where that degenerates, n itself.
+template <int D>
+Vec<D> carry_normal(const Mat<D>& linear, const Vec<D>& normal);
+
 // A handle set moving along the straight path from `from` (t = 0) to `to` (t = 1).
 // deform(points, t0, t1) maps points by the MLS deformation that takes the
 // handles at lerp(t0) to the handles at lerp(t1); map() and apply() are the one
@@ -66,6 +71,12 @@ class MlsDeformation final : public Deformation<D> {
   const std::vector<Vec<D>>& from() const { return direct_.p; }
   const std::vector<Vec<D>>& to() const { return direct_.q; }
   MlsKind kind() const { return kind_; }
+
+  // 3D rigid and similarity: find the rotation by Newton's polar iteration
+  // rather than an SVD where the fit is well conditioned (several times
+  // faster). The map is the same to rounding, not bit for bit, so the paper's
+  // runs keep it off (the default).
+  void use_polar_iteration(bool on) { polar_ = on; }
   double alpha() const { return alpha_; }
 
   // How many points mapped so far (by map, local_map, apply or deform) had the
@@ -100,9 +111,12 @@ class MlsDeformation final : public Deformation<D> {
   Handles direct_;
   MlsKind kind_;
   double alpha_;
+  bool polar_ = false;
   mutable FallbackCounter fallbacks_;
 };
 
+extern template Vec<2> carry_normal<2>(const Mat<2>&, const Vec<2>&);
+extern template Vec<3> carry_normal<3>(const Mat<3>&, const Vec<3>&);
 extern template class MlsDeformation<2>;
 extern template class MlsDeformation<3>;
 

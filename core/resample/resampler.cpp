@@ -68,10 +68,16 @@ Variant parse_variant(const std::string& name) {
 
 template <int D>
 void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
+  update_function(surface, surface.points().positions, pool);
+}
+
+template <int D>
+void Resampler<D>::update_function(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& walk_positions,
+                                   ThreadPool& pool) {
   const Grid<D>& grid = surface.grid();
   field_.clear();
   stats_ = ResampleStats{};
-  walk_.mark(grid, surface.points().positions, field_, pool);
+  walk_.mark(grid, walk_positions, field_, pool);
   const std::vector<Mask>& needed = walk_.needed();
   for (const Mask m : needed) stats_.vertices += static_cast<std::size_t>(std::popcount(m));
   signs_.assign(needed.size(), BrickSigns{});

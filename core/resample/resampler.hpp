@@ -71,6 +71,11 @@ class Resampler {
  public:
   // Update_Function().
   void update_function(const AmlsSurface<D>& surface, ThreadPool& pool);
+  // Update_Function() at the vertices of the walks of `walk_positions` only
+  // (a part of the surface's points, best in cell order), so that Resample()
+  // creates points only there (local resampling). F there still reads every
+  // point of the surface.
+  void update_function(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& walk_positions, ThreadPool& pool);
   // Resample(); requires update_function() on the same surface first, once per resample.
   PointSet<D> resample(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/deform/flow_deformation.hpp"
+#include "core/run/drag_bench.hpp"
 #include "core/run/flow_test.hpp"
 #include "core/util/process_memory.hpp"
 #include "core/geometry/shapes.hpp"
@@ -33,6 +34,46 @@ BenchCase from_flow_test(const std::string& name, const FlowTestReport& r) {
 
 std::string sphere_step_name(std::size_t points) {
   return "3D sphere step, " + std::to_string(points / 1000) + "k points";
+}
+
+std::string drag_name(std::size_t points, DragResample mode) {
+  const std::string size = points >= 1000000 ? std::to_string(points / 1000000) + "M" : std::to_string(points / 1000) + "k";
+  return "drag " + size + " " + to_string(mode);
+}
+
+BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
+  reset_peak_memory();
+  DragBenchConfig config;
+  config.points = points;
+  config.threads = threads;
+  config.resample = mode;
+  const DragBenchReport r = run_drag_bench(config);
+  BenchCase c;
+  c.name = drag_name(points, mode);
+  c.points = r.points_initial;
+  c.points_processed = r.points_initial * r.step_seconds.size();
+  c.timings = r.timings.phases();
+  c.peak_memory_mib = peak_memory_mib();
+  c.threads = threads;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "%zu steps: %.1f ms median, %.1f ms max per step, %.0f points resampled per step; after: spacing "
+                "%.2f/%.2f/%.2f h (min/median/max), exact shape to surface %.2g/%.2g h (mean/max), %zu holes in %zu "
+                "probes",
+                r.step_seconds.size(), r.median_ms(), r.max_ms(), r.mean_resampled(), r.spacing_h.min,
+                r.spacing_h.median, r.spacing_h.max, r.exact_to_surface_mean_h, r.exact_to_surface_max_h, r.holes,
+                r.probes);
+  c.result = text;
+  c.figures = {{"step_ms_median", r.median_ms()},
+               {"step_ms_max", r.max_ms()},
+               {"points_resampled_per_step", r.mean_resampled()},
+               {"spacing_h_min", r.spacing_h.min},
+               {"spacing_h_median", r.spacing_h.median},
+               {"spacing_h_max", r.spacing_h.max},
+               {"exact_to_surface_mean_h", r.exact_to_surface_mean_h},
+               {"exact_to_surface_max_h", r.exact_to_surface_max_h},
+               {"holes", static_cast<double>(r.holes)}};
+  return c;
 }
 
 }  // namespace
@@ -74,6 +115,9 @@ std::vector<BenchSpec> bench_suite(int threads) {
   }
   for (const std::size_t n : {50000u, 200000u, 1000000u})
     specs.push_back({sphere_step_name(n), [n, threads] { return bench_sphere_step(n, threads); }});
+  for (const std::size_t n : {200000u, 1000000u})
+    for (const DragResample mode : {DragResample::always, DragResample::local})
+      specs.push_back({drag_name(n, mode), [n, mode, threads] { return bench_drag(n, mode, threads); }});
   const std::string enright_name = "3D Enright 128^3 exact";
   specs.push_back({enright_name, [enright_name, threads] {
                      FlowTestConfig enright;

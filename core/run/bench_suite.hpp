@@ -1,9 +1,11 @@
 #pragma once
 // The fixed benchmark suite of `amls bench`: the 2D vortex at 512^2 (exact and
-// interpolated), one full step on 3D spheres of 50k, 200k and 1M points, and
-// the Enright test at 128^3.
+// interpolated), one full step on 3D spheres of 50k, 200k and 1M points, a
+// drag on spheres of 200k and 1M points resampled always or locally
+// (core/run/drag_bench.hpp), and the Enright test at 128^3.
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/run/deforming_surface.hpp"
@@ -19,6 +21,8 @@ struct BenchCase {
   double peak_memory_mib = 0.0;      // peak resident memory during this case
   int threads = 1;
   std::string result;                // the case's accuracy figure, in words
+  // Named figures of the case, for the JSON report (the drag cases' step times and quality).
+  std::vector<std::pair<std::string, double>> figures;
   double points_per_second() const {
     const double total = total_seconds(timings);
     return total > 0.0 ? static_cast<double>(points_processed) / total : 0.0;

@@ -1,0 +1,314 @@
+#include "core/deform/mls_lattice.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+
+#include "core/geometry/grid.hpp"
+
+namespace amls {
+
+namespace {
+
+// The dense tables cost a few bytes per lattice cell: beyond this many cells
+// per point (plus a floor for small sets) the points are too scattered for a
+// lattice to pay.
+constexpr double kMaxCellsPerPoint = 4.0;
+constexpr double kMinCells = 4096.0;
+
+template <int D>
+struct Sample {
+  Vec<D> position;
+  Mat<D> linear;
+};
+
+template <int D>
+Sample<D> exact_sample(const MlsDeformation<D>& map, const Vec<D>& x) {
+  const MlsLocalMap<D> local = map.local_map(x);
+  return {local.position, local.linear};
+}
+
+// A box of cells, `cells` per axis from `origin`, numbered row-major (axis 0 fastest).
+template <int D>
+struct Box {
+  Vec<D> origin = Vec<D>::Zero();
+  double spacing = 1.0;
+  IVec<D> cells = IVec<D>::Ones();
+
+  std::size_t count(std::int64_t extra) const {
+    std::size_t n = 1;
+    for (int a = 0; a < D; ++a) n *= static_cast<std::size_t>(cells[a] + extra);
+    return n;
+  }
+  std::size_t cell_index(const IVec<D>& c) const { return index_in(c, 0); }
+  std::size_t node_index(const IVec<D>& n) const { return index_in(n, 1); }
+  // The cell holding x (clamped into the box) and x's place in it, each coordinate in [0, 1].
+  IVec<D> locate(const Vec<D>& x, Vec<D>& t) const {
+    IVec<D> c;
+    for (int a = 0; a < D; ++a) {
+      const double u = (x[a] - origin[a]) / spacing;
+      c[a] = std::clamp(static_cast<std::int64_t>(std::floor(u)), std::int64_t{0}, cells[a] - 1);
+      t[a] = std::clamp(u - static_cast<double>(c[a]), 0.0, 1.0);
+    }
+    return c;
+  }
+  Vec<D> node_position(const IVec<D>& n) const { return origin + spacing * n.template cast<double>(); }
+  // Whether x lies within `margin` cells of cell c.
+  bool near_cell(const IVec<D>& c, const Vec<D>& x, double margin) const {
+    for (int a = 0; a < D; ++a) {
+      const double u = (x[a] - origin[a]) / spacing - static_cast<double>(c[a]);
+      if (u < -margin || u > 1.0 + margin) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::size_t index_in(const IVec<D>& v, std::int64_t extra) const {
+    std::size_t index = 0;
+    for (int a = D - 1; a >= 0; --a)
+      index = index * static_cast<std::size_t>(cells[a] + extra) + static_cast<std::size_t>(v[a]);
+    return index;
+  }
+};
+
+template <int D>
+IVec<D> corner(int v) {
+  IVec<D> offset;
+  for (int a = 0; a < D; ++a) offset[a] = (v >> a) & 1;
+  return offset;
+}
+
+// Multilinear interpolation of a cell's corner samples at t in [0, 1]^D.
+template <int D>
+Sample<D> interpolate(const std::array<const Sample<D>*, 1 << D>& corners, const Vec<D>& t) {
+  Sample<D> out{Vec<D>::Zero(), Mat<D>::Zero()};
+  for (int v = 0; v < (1 << D); ++v) {
+    double w = 1.0;
+    for (int a = 0; a < D; ++a) w *= (v >> a) & 1 ? t[a] : 1.0 - t[a];
+    out.position += w * corners[static_cast<std::size_t>(v)]->position;
+    out.linear += w * corners[static_cast<std::size_t>(v)]->linear;
+  }
+  return out;
+}
+
+// |J^T J - I| / 2 for the cell's mean Jacobian from its corner positions.
+template <int D>
+float strain_of(const std::array<const Sample<D>*, 1 << D>& corners, double spacing) {
+  Mat<D> jacobian = Mat<D>::Zero();
+  for (int v = 0; v < (1 << D); ++v)
+    for (int a = 0; a < D; ++a)
+      if ((v >> a) & 1)
+        jacobian.col(a) +=
+            corners[static_cast<std::size_t>(v)]->position - corners[static_cast<std::size_t>(v & ~(1 << a))]->position;
+  jacobian /= spacing * static_cast<double>(1 << (D - 1));
+  return static_cast<float>(0.5 * (jacobian.transpose() * jacobian - Mat<D>::Identity()).norm());
+}
+
+// The samples at a box's nodes, for the cells asked.
+template <int D>
+struct NodeSamples {
+  std::vector<std::int32_t> slot;  // node index -> sample, -1: not evaluated
+  std::vector<Sample<D>> samples;
+
+  std::array<const Sample<D>*, 1 << D> corners(const Box<D>& box, const IVec<D>& c) const {
+    std::array<const Sample<D>*, 1 << D> out;
+    for (int v = 0; v < (1 << D); ++v)
+      out[static_cast<std::size_t>(v)] = &samples[static_cast<std::size_t>(slot[box.node_index(c + corner<D>(v))])];
+    return out;
+  }
+};
+
+// A refined cell: its sub-cells' box, all its nodes, and which sub-cells map exactly.
+template <int D>
+struct Refined {
+  Box<D> box;
+  NodeSamples<D> nodes;
+  std::vector<std::uint8_t> exact;
+  std::vector<float> strain;
+};
+
+// Whether the map at a cell's centre is off the interpolant by more than the
+// tolerance, or a handle lies within one cell of it.
+template <int D>
+bool needs_refinement(const MlsDeformation<D>& map, const Box<D>& box, const IVec<D>& c,
+                      const std::array<const Sample<D>*, 1 << D>& corners, double tolerance) {
+  for (const Vec<D>& handle : map.from())
+    if (box.near_cell(c, handle, 1.0)) return true;
+  const Vec<D> centre = box.node_position(c).array() + 0.5 * box.spacing;
+  const Vec<D> half = Vec<D>::Constant(0.5);
+  return (interpolate<D>(corners, half).position - map.map(centre)).norm() > tolerance;
+}
+
+template <int D>
+Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec<D>& c, const MlsLatticeOptions& o) {
+  Refined<D> r;
+  r.box.origin = coarse.node_position(c);
+  r.box.spacing = coarse.spacing / o.refinement;
+  r.box.cells = IVec<D>::Constant(o.refinement);
+  const std::size_t nodes = r.box.count(1);
+  r.nodes.slot.resize(nodes);
+  r.nodes.samples.reserve(nodes);
+  for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells, [&](const IVec<D>& n) {
+    r.nodes.slot[r.box.node_index(n)] = static_cast<std::int32_t>(r.nodes.samples.size());
+    r.nodes.samples.push_back(exact_sample(map, r.box.node_position(n)));
+  });
+  r.exact.resize(r.box.count(0));
+  r.strain.resize(r.box.count(0));
+  for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells.array() - 1, [&](const IVec<D>& s) {
+    const auto corners = r.nodes.corners(r.box, s);
+    r.exact[r.box.cell_index(s)] = needs_refinement(map, r.box, s, corners, o.tolerance) ? 1 : 0;
+    r.strain[r.box.cell_index(s)] = strain_of<D>(corners, r.box.spacing);
+  });
+  return r;
+}
+
+}  // namespace
+
+template <int D>
+MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& points, std::vector<float>* strain,
+                                 const MlsLatticeOptions& options, ThreadPool& pool) {
+  if (!(options.spacing > 0.0) || (options.interpolate && !(options.tolerance > 0.0)) || options.refinement < 1)
+    throw std::invalid_argument("MLS lattice: spacing and tolerance must be positive and refinement at least 1");
+  const std::size_t n = points.size();
+  if (points.normals.size() != n)
+    throw std::invalid_argument("MLS lattice: " + std::to_string(n) + " points but " +
+                                std::to_string(points.normals.size()) + " normals");
+  MlsLatticeStats stats;
+  if (strain) strain->resize(n, 0.0F);
+  if (n == 0 || map.from().empty()) return stats;
+
+  // The points' box, in lattice cells.
+  Vec<D> lo = points.positions.front(), hi = lo;
+  for (const Vec<D>& p : points.positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  Box<D> box;
+  box.origin = lo;
+  box.spacing = options.spacing;
+  double total_cells = 1.0;
+  for (int a = 0; a < D; ++a) {
+    box.cells[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / options.spacing)) + 1;
+    total_cells *= static_cast<double>(box.cells[a]);
+  }
+  if (!std::isfinite(total_cells) || total_cells > kMaxCellsPerPoint * static_cast<double>(n) + kMinCells) {
+    stats.fell_back = true;
+    stats.exact_points = stats.evaluations = n;
+    map.apply(points, pool);
+    if (strain) std::fill(strain->begin(), strain->end(), std::numeric_limits<float>::infinity());
+    return stats;
+  }
+
+  // The cells holding points, and their nodes, evaluated exactly.
+  std::vector<std::uint32_t> point_cell(n);
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    Vec<D> t;
+    for (std::size_t i = begin; i < end; ++i)
+      point_cell[i] = static_cast<std::uint32_t>(box.cell_index(box.locate(points.positions[i], t)));
+  });
+  std::vector<std::uint8_t> used(box.count(0), 0);
+  for (const std::uint32_t c : point_cell) used[c] = 1;
+  std::vector<IVec<D>> cells;
+  NodeSamples<D> nodes;
+  nodes.slot.assign(box.count(1), -1);
+  std::vector<IVec<D>> node_list;
+  for_each_index_in_box<D>(IVec<D>::Zero(), box.cells.array() - 1, [&](const IVec<D>& c) {
+    if (!used[box.cell_index(c)]) return;
+    cells.push_back(c);
+    for (int v = 0; v < (1 << D); ++v) {
+      const IVec<D> node = c + corner<D>(v);
+      std::int32_t& slot = nodes.slot[box.node_index(node)];
+      if (slot >= 0) continue;
+      slot = static_cast<std::int32_t>(node_list.size());
+      node_list.push_back(node);
+    }
+  });
+  nodes.samples.resize(node_list.size());
+  pool.parallel_for(node_list.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) nodes.samples[k] = exact_sample(map, box.node_position(node_list[k]));
+  });
+
+  // Check every cell; refine those that fail.
+  constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> refined_of(box.count(0), kInterpolated);  // cell -> its Refined, if refined
+  std::vector<float> cell_strain(box.count(0), 0.0F);
+  std::vector<std::uint8_t> refine_cell(cells.size(), 0);
+  pool.parallel_for(cells.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto corners = nodes.corners(box, cells[k]);
+      refine_cell[k] = options.interpolate && needs_refinement(map, box, cells[k], corners, options.tolerance) ? 1 : 0;
+      cell_strain[box.cell_index(cells[k])] = strain_of<D>(corners, box.spacing);
+    }
+  });
+  std::vector<IVec<D>> to_refine;
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    if (refine_cell[k]) {
+      refined_of[box.cell_index(cells[k])] = static_cast<std::uint32_t>(to_refine.size());
+      to_refine.push_back(cells[k]);
+    }
+  std::vector<Refined<D>> refined(to_refine.size());
+  pool.parallel_for(to_refine.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) refined[k] = refine(map, box, to_refine[k], options);
+  });
+
+  stats.cells = cells.size();
+  if (!options.interpolate) {
+    stats.evaluations = node_list.size() + n;
+    stats.exact_points = n;
+    map.apply(points, pool);
+    if (strain)
+      for (std::size_t i = 0; i < n; ++i) (*strain)[i] += cell_strain[point_cell[i]];
+    return stats;
+  }
+
+  // The points.
+  stats.refined_cells = refined.size();
+  // Nodes and centre checks, coarse and refined; the exact points are added below.
+  stats.evaluations = node_list.size() + cells.size();
+  for (const Refined<D>& r : refined) stats.evaluations += r.nodes.samples.size() + r.exact.size();
+  for (const Refined<D>& r : refined)
+    for (const std::uint8_t e : r.exact) stats.exact_cells += e;
+  std::vector<std::size_t> exact_points(static_cast<std::size_t>(pool.threads()), 0);
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+    std::size_t exact_here = 0;
+    Vec<D> t;
+    for (std::size_t i = begin; i < end; ++i) {
+      Vec<D>& p = points.positions[i];
+      const IVec<D> c = box.locate(p, t);
+      const std::uint32_t r = refined_of[point_cell[i]];
+      Sample<D> sample;
+      float point_strain = cell_strain[point_cell[i]];
+      if (r == kInterpolated) {
+        sample = interpolate<D>(nodes.corners(box, c), t);
+      } else {
+        const Refined<D>& cell = refined[r];
+        const IVec<D> s = cell.box.locate(p, t);
+        const std::size_t s_index = cell.box.cell_index(s);
+        point_strain = cell.strain[s_index];
+        if (cell.exact[s_index]) {
+          sample = exact_sample(map, p);
+          ++exact_here;
+        } else {
+          sample = interpolate<D>(cell.nodes.corners(cell.box, s), t);
+        }
+      }
+      p = sample.position;
+      points.normals[i] = carry_normal<D>(sample.linear, points.normals[i]);
+      if (strain) (*strain)[i] += point_strain;
+    }
+    exact_points[static_cast<std::size_t>(block)] += exact_here;
+  });
+  for (const std::size_t e : exact_points) stats.exact_points += e;
+  stats.evaluations += stats.exact_points;
+  return stats;
+}
+
+template MlsLatticeStats apply_on_lattice<2>(const MlsDeformation<2>&, PointSet<2>&, std::vector<float>*,
+                                             const MlsLatticeOptions&, ThreadPool&);
+template MlsLatticeStats apply_on_lattice<3>(const MlsDeformation<3>&, PointSet<3>&, std::vector<float>*,
+                                             const MlsLatticeOptions&, ThreadPool&);
+
+}  // namespace amls

@@ -1,0 +1,84 @@
+#pragma once
+// Resampling only where the sampling changed. A drag moves the whole surface,
+// but away from the dragged handle the map is nearly rigid: the points keep
+// their spacing and their carried normals stay good enough to orient the next
+// fit, so nothing there needs a new fit, a new F or a new walk.
+//
+// Each point carries its strain since it was made (the sum of the per-step
+// strains of the map, core/deform/mls_lattice.hpp). Where it exceeds the
+// limit, the point's region cell (a cube of 4 h) is flagged; the flagged cells
+// grown by Delta are the region R that is resampled:
+//
+// - the walks of the points in R grown by one cell (so that every edge in R
+//   near the surface is walked, even where the points near it lie just
+//   outside R) give the vertices where F is needed;
+// - F there needs the points within Delta, their pseudo-normals those within
+//   2 Delta, and the 3D bias correction two more rings: the support, every
+//   point within 4 Delta + 2 h of the walked cells, is fitted (Update_Normals);
+// - Update_Function and Resample run on those vertices only (Resampler with
+//   its own walk points); of the new points, those inside R replace the old
+//   points of R. Points outside R keep their positions and carried normals.
+//
+// At the seam a kept point claims its nearest grid vertex: a crossing whose
+// nearer edge end is a claimed vertex counts as HAVECLOSEPOINT there and is
+// dropped, as is one within h / 2 of a kept point (a kept point off the grid
+// can be that close to a crossing whose nearer end it does not claim). So new
+// points keep from kept ones the h / 2 that the resampler keeps between its
+// own points.
+//
+// Inside R, F and the crossings are those of a whole-surface resample of the
+// same points: only which points are replaced differs.
+#include <cstddef>
+#include <vector>
+
+#include "core/resample/resampler.hpp"
+
+namespace amls {
+
+struct LocalResampleOptions {
+  // Summed strain above which a point's region is resampled: the spacing
+  // around it may have changed by about this fraction.
+  double strain_limit = 0.15;
+};
+
+struct LocalResampleStats {
+  std::size_t flagged_cells = 0;    // region cells with a point over the strain limit
+  std::size_t region_cells = 0;     // of R (flagged cells grown by Delta)
+  std::size_t replaced = 0;         // old points in R, removed
+  std::size_t support = 0;          // points fitted (Update_Normals)
+  std::size_t inserted = 0;         // new points in R
+  std::size_t dropped_at_seam = 0;  // new points in R dropped for a kept point's vertex or nearness
+  NormalStats normals;
+  ResampleStats resample;  // of the resampler's run over the walked vertices
+  double normals_seconds = 0.0;
+  double function_seconds = 0.0;
+  double resample_seconds = 0.0;  // the resampler's walk and the splice
+};
+
+template <int D>
+class LocalResampler {
+ public:
+  LocalResampler(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant);
+
+  // Resamples S(points) in the region of the points whose strain exceeds the
+  // limit; `strain` (one per point) is reset there: new points start at 0.
+  // Kept points come first, in their order, then the new ones.
+  LocalResampleStats resample(PointSet<D>& points, std::vector<float>& strain, ThreadPool& pool);
+
+  double region_cell_size() const { return cell_size_; }
+  const LocalResampleOptions& options() const { return options_; }
+  void set_options(const LocalResampleOptions& options) { options_ = options; }
+
+ private:
+  Grid<D> grid_;
+  AmlsParameters parameters_;
+  Variant variant_;
+  LocalResampleOptions options_;
+  double cell_size_;
+  Resampler<D> resampler_;
+};
+
+extern template class LocalResampler<2>;
+extern template class LocalResampler<3>;
+
+}  // namespace amls

@@ -1,0 +1,143 @@
+#include "core/run/drag_bench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/deform/mls_deformation.hpp"
+#include "core/geometry/shapes.hpp"
+#include "core/run/local_deforming_surface.hpp"
+#include "core/util/stopwatch.hpp"
+
+namespace amls {
+
+namespace {
+
+const Vec<3> kCenter(0.5, 0.5, 0.5);
+constexpr double kRadius = 0.3;
+
+// |F| / h at the tracers, and where F is undefined there.
+void measure_tracers(const AmlsSurface<3>& surface, const std::vector<Vec<3>>& tracers, ThreadPool& pool,
+                     DragBenchReport& report) {
+  struct Partial {
+    double sum = 0.0;
+    double max = 0.0;
+    std::size_t defined = 0;
+    std::size_t holes = 0;
+  };
+  std::vector<Partial> partial(static_cast<std::size_t>(pool.threads()));
+  const double h = surface.grid().spacing();
+  pool.parallel_for(tracers.size(), [&](std::size_t begin, std::size_t end, int block) {
+    Partial p;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Evaluation<3> e = surface.evaluate(tracers[i]);
+      if (!e.defined) {
+        ++p.holes;
+        continue;
+      }
+      const double d = std::abs(e.value) / h;
+      p.sum += d;
+      p.max = std::max(p.max, d);
+      ++p.defined;
+    }
+    partial[static_cast<std::size_t>(block)] = p;
+  });
+  Partial total;
+  for (const Partial& p : partial) {
+    total.sum += p.sum;
+    total.max = std::max(total.max, p.max);
+    total.defined += p.defined;
+    total.holes += p.holes;
+  }
+  report.probes = tracers.size();
+  report.holes = total.holes;
+  report.exact_to_surface_max_h = total.max;
+  report.exact_to_surface_mean_h = total.defined > 0 ? total.sum / static_cast<double>(total.defined) : 0.0;
+}
+
+}  // namespace
+
+const char* to_string(DragResample mode) { return mode == DragResample::always ? "always" : "local"; }
+
+double DragBenchReport::median_ms() const {
+  if (step_seconds.empty()) return 0.0;
+  std::vector<double> sorted = step_seconds;
+  std::sort(sorted.begin(), sorted.end());
+  return 1000.0 * sorted[sorted.size() / 2];
+}
+
+double DragBenchReport::max_ms() const {
+  return step_seconds.empty() ? 0.0 : 1000.0 * *std::max_element(step_seconds.begin(), step_seconds.end());
+}
+
+double DragBenchReport::mean_resampled() const {
+  if (resampled.empty()) return 0.0;
+  double sum = 0.0;
+  for (const std::size_t n : resampled) sum += static_cast<double>(n);
+  return sum / static_cast<double>(resampled.size());
+}
+
+std::vector<Vec<3>> drag_handles(const Vec<3>& center, double radius, double pull, std::size_t step) {
+  return {center - radius * Vec<3>::UnitZ(), center + radius * Vec<3>::UnitX(), center + radius * Vec<3>::UnitY(),
+          center + (radius + pull * static_cast<double>(step)) * Vec<3>::UnitZ()};
+}
+
+DragBenchReport run_drag_bench(const DragBenchConfig& config) {
+  DragBenchReport report;
+  report.config = config;
+  // As bench_sphere_step: a grid-resampled sphere has about 0.83 area / h^2 points.
+  const double h = std::sqrt(0.83 * 4.0 * std::numbers::pi * kRadius * kRadius / static_cast<double>(config.points));
+  report.h = h;
+  const double pull = config.pull_h * h;
+  const Grid<3> grid(Vec<3>::Zero(), h);
+  PointSet<3> tracers = config.tracers > 0 ? sample_sphere(kCenter, kRadius, config.tracers) : PointSet<3>{};
+  auto deformation = [&](std::size_t k) {
+    return MlsDeformation<3>(drag_handles(kCenter, kRadius, pull, k), drag_handles(kCenter, kRadius, pull, k + 1));
+  };
+  // The final points' quality, on a surface of their own.
+  auto measure = [&](const PointSet<3>& points, ThreadPool& pool) {
+    report.points_final = points.size();
+    if (tracers.empty()) return;
+    report.spacing_h = spacing_stats(points, h);
+    AmlsSurface<3> surface(grid, AmlsParameters{});
+    surface.set_points(points);
+    surface.hash_points(pool);
+    surface.update_normals(pool);
+    measure_tracers(surface, tracers.positions, pool, report);
+  };
+  if (config.resample == DragResample::always) {
+    DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
+    surface.set_points(sample_sphere(kCenter, kRadius, config.points));
+    surface.resample_only();
+    report.points_initial = surface.points().size();
+    for (std::size_t k = 0; k < config.steps; ++k) {
+      const MlsDeformation<3> map = deformation(k);
+      Stopwatch clock;
+      const StepStats stats = surface.step(map, 0.0, 1.0);
+      report.step_seconds.push_back(clock.lap());
+      report.resampled.push_back(stats.resample.inserted);
+      report.timings += stats.timings;
+      if (!tracers.empty()) map.apply(tracers, surface.pool());
+    }
+    surface.resample_only();
+    measure(surface.points(), surface.pool());
+  } else {
+    LocalDeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
+    surface.set_points(sample_sphere(kCenter, kRadius, config.points));
+    surface.resample_all();
+    report.points_initial = surface.points().size();
+    for (std::size_t k = 0; k < config.steps; ++k) {
+      const MlsDeformation<3> map = deformation(k);
+      Stopwatch clock;
+      const LocalStepStats stats = surface.step(map);
+      report.step_seconds.push_back(clock.lap());
+      report.resampled.push_back(stats.resample.inserted);
+      report.timings += stats.timings;
+      if (!tracers.empty()) map.apply(tracers, surface.pool());
+    }
+    measure(surface.points(), surface.pool());
+  }
+  return report;
+}
+
+}  // namespace amls

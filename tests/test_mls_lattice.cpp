@@ -1,0 +1,126 @@
+#include <doctest/doctest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/deform/mls_lattice.hpp"
+#include "core/geometry/shapes.hpp"
+
+using namespace amls;
+
+namespace {
+
+// A sphere of radius 0.3 dragged at its top by `pull`, three handles fixed (the drag benchmark's set-up).
+MlsDeformation<3> drag(double pull) {
+  const Vec<3> c(0.5, 0.5, 0.5);
+  const double r = 0.3;
+  std::vector<Vec<3>> from = {c - r * Vec<3>::UnitZ(), c + r * Vec<3>::UnitX(), c + r * Vec<3>::UnitY(),
+                              c + r * Vec<3>::UnitZ()};
+  std::vector<Vec<3>> to = from;
+  to[3].z() += pull;
+  return MlsDeformation<3>(from, to);
+}
+
+}  // namespace
+
+TEST_CASE("MLS lattice: positions within the tolerance of the exact map, normals close, any thread count") {
+  const double h = 0.004;
+  const MlsDeformation<3> map = drag(0.5 * h);
+  const PointSet<3> start = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 40000);
+  PointSet<3> exact = start;
+  ThreadPool one(1), two(2);
+  map.apply(exact, one);
+  const MlsLatticeOptions options{8.0 * h, 0.01 * h, 4, true};
+  PointSet<3> fast = start, fast2 = start;
+  std::vector<float> strain, strain2;
+  const MlsLatticeStats stats = apply_on_lattice(map, fast, &strain, options, one);
+  apply_on_lattice(map, fast2, &strain2, options, two);
+  CHECK_FALSE(stats.fell_back);
+  CHECK(stats.refined_cells > 0);                 // near the handles
+  CHECK(stats.exact_points < start.size() / 10);  // most points interpolate
+  double worst = 0.0, worst_normal = 0.0;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    worst = std::max(worst, (fast.positions[i] - exact.positions[i]).norm());
+    worst_normal = std::max(worst_normal, (fast.normals[i] - exact.normals[i]).norm());
+  }
+  MESSAGE("largest position error " << worst / h << " h, normal error " << worst_normal);
+  CHECK(worst <= 0.01 * h);
+  CHECK(worst_normal < 1e-3);
+  CHECK(fast.positions == fast2.positions);
+  CHECK(fast.normals == fast2.normals);
+  CHECK(strain == strain2);
+}
+
+TEST_CASE("MLS lattice: the strain of a rigid motion is zero, of a uniform scaling s is (s^2 - 1) sqrt(D) / 2") {
+  const double h = 0.004;
+  const MlsLatticeOptions options{8.0 * h, 0.01 * h, 4, true};
+  const PointSet<3> start = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
+  ThreadPool pool(2);
+  const std::vector<Vec<3>> handles = drag(0.0).from();
+  std::vector<Vec<3>> moved = handles, scaled = handles;
+  for (Vec<3>& p : moved) p += Vec<3>(0.01, -0.02, 0.005);
+  for (Vec<3>& p : scaled) p = Vec<3>(0.5, 0.5, 0.5) + 1.01 * (p - Vec<3>(0.5, 0.5, 0.5));
+  PointSet<3> points = start;
+  std::vector<float> strain;
+  apply_on_lattice(MlsDeformation<3>(handles, moved), points, &strain, options, pool);
+  for (const float s : strain) REQUIRE(s < 1e-9F);
+  points = start;
+  strain.clear();
+  apply_on_lattice(MlsDeformation<3>(handles, scaled, MlsKind::similarity), points, &strain, options, pool);
+  const double expected = 0.5 * (1.01 * 1.01 - 1.0) * std::sqrt(3.0);
+  for (const float s : strain) REQUIRE(s == doctest::Approx(expected).epsilon(1e-6));
+}
+
+TEST_CASE("MLS lattice: strain accumulates over steps; a drag of h/2 strains by far less than the limit per step") {
+  const double h = 0.004;
+  const MlsLatticeOptions options{8.0 * h, 0.01 * h, 4, true};
+  PointSet<3> points = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
+  ThreadPool pool(2);
+  std::vector<float> strain;
+  apply_on_lattice(drag(0.5 * h), points, &strain, options, pool);
+  const float once = *std::max_element(strain.begin(), strain.end());
+  apply_on_lattice(drag(0.5 * h), points, &strain, options, pool);
+  const float twice = *std::max_element(strain.begin(), strain.end());
+  MESSAGE("largest strain after one step " << once << ", after two " << twice);
+  CHECK(once > 1e-4F);
+  CHECK(once < 0.02F);
+  CHECK(twice > 1.5F * once);
+}
+
+TEST_CASE("MLS lattice without interpolation: the exact map's points, with the strain") {
+  const double h = 0.004;
+  const MlsDeformation<3> map = drag(0.5 * h);
+  const PointSet<3> start = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
+  ThreadPool pool(2);
+  PointSet<3> exact = start, mapped = start;
+  map.apply(exact, pool);
+  std::vector<float> strain;
+  const MlsLatticeStats stats = apply_on_lattice(map, mapped, &strain, MlsLatticeOptions{8.0 * h, 0.0, 4, false}, pool);
+  CHECK(stats.exact_points == start.size());
+  CHECK(mapped.positions == exact.positions);
+  CHECK(mapped.normals == exact.normals);
+  CHECK(*std::max_element(strain.begin(), strain.end()) > 0.0F);
+}
+
+TEST_CASE("MLS deformation by the polar iteration: the SVD's map to rounding") {
+  const double h = 0.004;
+  for (const MlsKind kind : {MlsKind::rigid, MlsKind::similarity}) {
+    MlsDeformation<3> svd(drag(0.0).from(), drag(7.0 * h).to(), kind);
+    MlsDeformation<3> polar = svd;
+    polar.use_polar_iteration(true);
+    const PointSet<3> start = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.32, 5000);
+    ThreadPool pool(1);
+    PointSet<3> a = start, b = start;
+    svd.apply(a, pool);
+    polar.apply(b, pool);
+    double worst = 0.0, worst_normal = 0.0;
+    for (std::size_t i = 0; i < start.size(); ++i) {
+      worst = std::max(worst, (a.positions[i] - b.positions[i]).norm());
+      worst_normal = std::max(worst_normal, (a.normals[i] - b.normals[i]).norm());
+    }
+    CHECK(worst < 1e-13);
+    CHECK(worst_normal < 1e-12);
+  }
+}
