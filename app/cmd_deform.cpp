@@ -94,7 +94,7 @@ void add_deform_command(CLI::App& app) {
                   "write frames (frame_00000.ply, ...), the exact deformed shape's tracers (exact.ply) and report.json here; they go to DIR.partial first, which is "
                   "renamed to DIR only when the run completes");
   cmd->add_option("--frames-every", options->frames_every, "write every K-th frame (the last is always written)")
-      ->check(CLI::PositiveNumber)
+      ->check(in_range(ranges::kFramesEvery))
       ->capture_default_str();
   cmd->add_option("--format", options->format, "frame format: ply (binary) or xyz")
       ->check(CLI::IsMember({"ply", "xyz"}))
@@ -107,7 +107,7 @@ void add_deform_command(CLI::App& app) {
   add_threads_option(*cmd, options->threads);
   cmd->add_option("--tracers", options->tracers_per_point,
                   "tracer points per initial point, standing for the exact deformed shape")
-      ->check(CLI::Range(1.0, 10000.0))
+      ->check(in_range(ranges::kTracersPerPoint))
       ->capture_default_str();
   cmd->add_option("--max-steps", options->max_steps, "stop after this many steps (0: all)")->capture_default_str();
   cmd->add_option("--json", options->json_path, "also write the JSON report to this file");

@@ -50,10 +50,10 @@ void add_resample_command(CLI::App& app) {
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .xyz or .obj)")->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
   CLI::Option* grid = cmd->add_option("--grid", options->resampling.grid, "cells per unit length: h = 1/N")
-                          ->check(CLI::PositiveNumber)
+                          ->check(in_range(ranges::kGridCells))
                           ->capture_default_str();
   cmd->add_option("--spacing", options->resampling.spacing, "grid spacing h (instead of --grid)")
-      ->check(CLI::PositiveNumber)
+      ->check(in_range(ranges::kSpacing))
       ->excludes(grid);
   cmd->add_option("--dim", options->dimension, "read the input as 2D or 3D (default: from the file)")
       ->check(CLI::IsMember({2, 3}));

@@ -4,7 +4,6 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 #include <stdexcept>
 #include <variant>
 
@@ -40,12 +39,6 @@ std::string lowercase_extension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
-}
-
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
 }
 
 // Every point drawable: the renderer would skip the others silently, but a file with
@@ -116,8 +109,7 @@ Picture scene_picture(const Scene<D>& scene, const PictureInputOptions& options)
 }
 
 Picture file_picture(const std::string& path, const PictureInputOptions& options) {
-  if (options.spacing != 0.0 && !(options.spacing > 0.0 && std::isfinite(options.spacing)))
-    throw std::invalid_argument("the spacing must be a positive number, got " + format_number(options.spacing));
+  if (options.spacing != 0.0) check_range("--spacing", options.spacing, ranges::kSpacing);
   Picture picture;
   SurfaceSampleOptions sampling;
   sampling.dimension = options.dimension;
@@ -286,8 +278,7 @@ void Picture::fill(SplatRenderer& renderer) const {
 }
 
 Picture load_picture(const std::string& path, const PictureInputOptions& options) {
-  if (!(options.radius_factor > 0.0) || !std::isfinite(options.radius_factor))
-    throw std::invalid_argument("the radius factor must be positive, got " + format_number(options.radius_factor));
+  check_range("--radius-factor", options.radius_factor, ranges::kRadiusFactor);
   Picture picture;
   if (lowercase_extension(path) == ".json") {
     if (options.spacing != 0.0)
@@ -323,21 +314,6 @@ OrbitView parse_view(const std::string& text) {
     if (!(*view.distance > 0.0f)) throw std::invalid_argument("--view distance must be above 0, got " + parts[2]);
   }
   return view;
-}
-
-ImageSize parse_image_size(const std::string& text) {
-  const std::vector<std::string> parts = split(text, 'x');
-  auto dimension = [&](const std::string& part, const char* what) {
-    int value = 0;
-    const char* end = part.data() + part.size();
-    const auto [ptr, ec] = std::from_chars(part.data(), end, value);
-    if (part.empty() || ec != std::errc() || ptr != end || value < 1 || value > 16384)
-      throw std::invalid_argument(std::string("--size ") + what + " must be a whole number from 1 to 16384, got '" +
-                                  part + "' in '" + text + "'");
-    return value;
-  };
-  if (parts.size() != 2) throw std::invalid_argument("--size must be WIDTHxHEIGHT, e.g. 480x360, got '" + text + "'");
-  return {dimension(parts[0], "width"), dimension(parts[1], "height")};
 }
 
 RenderJob picture_job(const Picture& picture, ImageSize size, const std::optional<OrbitView>& view,

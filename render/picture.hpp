@@ -24,6 +24,7 @@
 
 #include "core/geometry/point_set.hpp"
 #include "core/run/scene_run.hpp"
+#include "core/util/parameter_ranges.hpp"
 #include "render/headless.hpp"
 #include "render/splat_renderer.hpp"
 
@@ -78,13 +79,6 @@ struct OrbitView {
 // "az,el" or "az,el,dist". Throws std::invalid_argument saying what is wrong:
 // not 2 or 3 numbers, a non-finite number, an elevation outside [-89.9, 89.9], a distance not above 0.
 OrbitView parse_view(const std::string& text);
-
-// "WxH", e.g. "480x360": each from 1 to 16384. Throws std::invalid_argument otherwise.
-struct ImageSize {
-  int width = 800;
-  int height = 600;
-};
-ImageSize parse_image_size(const std::string& text);
 
 // The job for a picture: its size, the camera (see the header comment; `view` is
 // for 3D pictures only, and throws std::invalid_argument for a 2D one) and options.

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/util/parameter_ranges.hpp"
+
 namespace amls {
 
 namespace {
@@ -14,11 +16,10 @@ std::int64_t margin_cells(double radius_factor) { return static_cast<std::int64_
 
 double spacing_of(const PointSetResampling& options) {
   if (options.spacing != 0.0) {
-    if (!(options.spacing > 0.0) || !std::isfinite(options.spacing))
-      throw std::invalid_argument("--spacing must be a positive number, got " + std::to_string(options.spacing));
+    check_range("--spacing", options.spacing, ranges::kSpacing);
     return options.spacing;
   }
-  if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1, got " + std::to_string(options.grid));
+  check_range("--grid", options.grid, ranges::kGridCells);
   return 1.0 / options.grid;
 }
 
@@ -27,8 +28,7 @@ double spacing_of(const PointSetResampling& options) {
 template <int D>
 Grid<D> resampling_grid(const PointSet<D>& points, const PointSetResampling& options) {
   const double h = spacing_of(options);
-  if (!(options.radius_factor > 0.0) || !std::isfinite(options.radius_factor))
-    throw std::invalid_argument("--radius-factor must be positive, got " + std::to_string(options.radius_factor));
+  check_range("--radius-factor", options.radius_factor, ranges::kRadiusFactor);
   if (points.empty()) return Grid<D>(Vec<D>::Zero(), h);
   Vec<D> lo = points.positions.front(), hi = lo;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -62,8 +62,7 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
     if (!points.normals[i].allFinite() || points.normals[i].isZero(0.0))
       throw std::invalid_argument("resampling needs oriented normals: point " + std::to_string(i) +
                                   " has a zero or non-finite normal");
-  if (options.threads < 1)
-    throw std::invalid_argument("--threads must be at least 1, got " + std::to_string(options.threads));
+  check_range("--threads", options.threads, ranges::kThreads);
   const Grid<D> grid = resampling_grid(points, options);
   DeformingSurface<D> surface(grid, AmlsParameters{options.radius_factor}, options.variant, options.threads);
   surface.set_points(std::move(points));

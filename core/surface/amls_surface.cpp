@@ -7,16 +7,15 @@
 
 #include "core/surface/surface_offsets.hpp"
 #include "core/math/weight.hpp"
+#include "core/util/parameter_ranges.hpp"
 
 namespace amls {
 
 template <int D>
 AmlsSurface<D>::AmlsSurface(const Grid<D>& grid, const AmlsParameters& parameters)
     : grid_(grid), parameters_(parameters), radius_(parameters.radius_factor * grid.spacing()) {
-  if (!(parameters.radius_factor > 0.0) || !std::isfinite(parameters.radius_factor))
-    throw std::invalid_argument("radius factor must be positive, got " + std::to_string(parameters.radius_factor));
-  if (!(parameters.min_weight >= 0.0))
-    throw std::invalid_argument("minimum weight must be non-negative, got " + std::to_string(parameters.min_weight));
+  check_range("radius factor", parameters.radius_factor, ranges::kRadiusFactor);
+  check_range("minimum weight", parameters.min_weight, ranges::kMinWeight);
 }
 
 template <int D>
