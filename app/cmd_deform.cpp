@@ -1,6 +1,7 @@
 // amls deform: runs a scene - its shape deformed through its handle stages -
 // writing frames and a report.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "app/flow_report.hpp"
 #include "app/terminal_progress.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/staged_directory.hpp"
 
 namespace amls::app {
@@ -66,9 +68,18 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
       write_point_set(out->file("exact." + options.format), tracers, format);
     };
   TerminalProgress progress;
-  const SceneRunReport report = run_scene<D>(
-      scene, run_options, frames,
-      [&](std::size_t k, std::size_t n, std::size_t p) { progress.update(k, n, static_cast<double>(k), p); }, exact);
+  const SceneRunReport report = [&] {
+    try {
+      return run_scene<D>(
+          scene, run_options, frames,
+          [&](std::size_t k, std::size_t n, std::size_t p) { progress.update(k, n, static_cast<double>(k), p); }, exact);
+    } catch (...) {
+      // Stopped on Ctrl+C: the frames so far are no output (a run that failed
+      // keeps them in DIR.partial, for a look at what went wrong).
+      if (out && interrupt_requested()) std::filesystem::remove_all(out->staging_path());
+      throw;
+    }
+  }();
   for (const std::string& warning : report.warnings) std::cerr << "amls: warning: " << warning << "\n";
   print_summary(std::cout, report);
   const nlohmann::json json = to_json(report);

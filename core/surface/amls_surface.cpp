@@ -38,6 +38,7 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   // Not hashed until the index is whole (the build can throw, or be cancelled).
   hashed_ = ready_ = false;
   index_.build(points_.positions, grid_.origin(), radius_, pool);
+  pool.poll_cancel();  // the build's sort and the copy below are serial: a stop between them
   // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
   const std::vector<std::uint32_t>& order = index_.order();
   PointSet<D> sorted;
