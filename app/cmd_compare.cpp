@@ -42,7 +42,7 @@ void add_compare_command(CLI::App& app) {
       ->check(CLI::IsMember({"vortex", "enright"}))
       ->capture_default_str();
   cmd->add_option("--grid", options->grid, "cells per unit length: h = 1/N (default: 256 vortex, 128 enright)")
-      ->check(CLI::PositiveNumber);
+      ->check(in_range(ranges::kFlowTestGridCells));
   add_flow_test_options(*cmd, options->config);
   add_threads_option(*cmd, options->config.threads);
   cmd->add_option("--json", options->json_path, "write {\"runs\": [report, report, report]} to this file");

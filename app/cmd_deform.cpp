@@ -1,6 +1,7 @@
 // amls deform: runs a scene - its shape deformed through its handle stages -
 // writing frames and a report.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/staged_directory.hpp"
 
 namespace amls::app {
@@ -71,9 +73,18 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
       write_point_set(out->file("exact." + options.format), tracers, format);
     };
   TerminalProgress progress;
-  const SceneRunReport report = run_scene<D>(
-      scene, run_options, frames,
-      [&](std::size_t k, std::size_t n, std::size_t p) { progress.update(k, n, static_cast<double>(k), p); }, exact);
+  const SceneRunReport report = [&] {
+    try {
+      return run_scene<D>(
+          scene, run_options, frames,
+          [&](std::size_t k, std::size_t n, std::size_t p) { progress.update(k, n, static_cast<double>(k), p); }, exact);
+    } catch (...) {
+      // Stopped on Ctrl+C: the frames so far are no output (a run that failed
+      // keeps them in DIR.partial, for a look at what went wrong).
+      if (out && interrupt_requested()) std::filesystem::remove_all(out->staging_path());
+      throw;
+    }
+  }();
   for (const std::string& warning : report.warnings) std::cerr << "amls: warning: " << warning << "\n";
   print_summary(std::cout, report);
   if (last_frame) {
@@ -109,7 +120,7 @@ void add_deform_command(CLI::App& app) {
                   "write frames (frame_00000.ply, ...), the exact deformed shape's tracers (exact.ply) and report.json here; they go to DIR.partial first, which is "
                   "renamed to DIR only when the run completes");
   cmd->add_option("--frames-every", options->frames_every, "write every K-th frame (the last is always written)")
-      ->check(CLI::PositiveNumber)
+      ->check(in_range(ranges::kFramesEvery))
       ->capture_default_str();
   cmd->add_option("--format", options->format, "frame format: ply (binary) or xyz")
       ->check(CLI::IsMember({"ply", "xyz"}))
@@ -122,7 +133,7 @@ void add_deform_command(CLI::App& app) {
   add_threads_option(*cmd, options->threads);
   cmd->add_option("--tracers", options->tracers_per_point,
                   "tracer points per initial point, standing for the exact deformed shape")
-      ->check(CLI::Range(1.0, 10000.0))
+      ->check(in_range(ranges::kTracersPerPoint))
       ->capture_default_str();
   cmd->add_option("--max-steps", options->max_steps, "stop after this many steps (0: all)")->capture_default_str();
   cmd->add_option("--json", options->json_path, "also write the JSON report to this file");

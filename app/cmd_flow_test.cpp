@@ -30,7 +30,9 @@ void add_flow_test_command(CLI::App& app, const std::string& name, const std::st
   auto options = std::make_shared<FlowTestOptions>();
   options->config.grid = default_grid;
   CLI::App* cmd = app.add_subcommand(name, description);
-  cmd->add_option("--grid", options->config.grid, "cells per unit length: h = 1/N")->capture_default_str();
+  cmd->add_option("--grid", options->config.grid, "cells per unit length: h = 1/N")
+      ->check(in_range(ranges::kFlowTestGridCells))
+      ->capture_default_str();
   add_variant_option(*cmd, options->variant, true);
   add_flow_test_options(*cmd, options->config);
   add_threads_option(*cmd, options->config.threads);

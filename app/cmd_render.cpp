@@ -63,7 +63,8 @@ void add_render_command(CLI::App& app) {
                   "point set (.ply, .off, .xyz, .pwn, .csv, .txt), mesh (.obj, .ply, .off) or scene (.json)")
       ->required();
   cmd->add_option("--out", options->out, "PNG file to write (written whole or not at all)")->required();
-  cmd->add_option("--size", options->size, "image size WIDTHxHEIGHT in pixels, each 1..16384")->capture_default_str();
+  cmd->add_option("--size", options->size, "image size WIDTHxHEIGHT in pixels, each 1.." + format_number(ranges::kImageSide.max))
+      ->capture_default_str();
   cmd->add_option("--view", options->view,
                   "3D only: az,el[,dist] - azimuth and elevation in degrees (elevation within +-89.9) and the eye's "
                   "distance from the shape's centre in world units (default: 30,20, framed to fit)");
@@ -81,9 +82,9 @@ void add_render_command(CLI::App& app) {
       cmd->add_option("--grid", options->grid,
                       "point sets and meshes: N cells, h = 1/N within the unit square/cube, else the bounding box's "
                       "longest side / N")
-          ->check(CLI::PositiveNumber);
+          ->check(in_range(ranges::kGridCells));
   cmd->add_option("--spacing", options->spacing, "point sets and meshes: h itself (instead of --grid)")
-      ->check(CLI::PositiveNumber)
+      ->check(in_range(ranges::kSpacing))
       ->excludes(grid);
   cmd->add_option("--dim", options->dimension, "point sets: read as 2D or 3D (default: from the file)")
       ->check(CLI::IsMember({2, 3}));
@@ -93,11 +94,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--no-handles", options->no_handles, "scenes: do not draw the handles");
   cmd->add_option("--supersample", options->supersample,
                   "anti-aliasing: draw N times larger each way and average N x N pixels (1: off, exact colours)")
-      ->check(CLI::Range(1, 8))
+      ->check(in_range(ranges::kSupersample))
       ->capture_default_str();
   cmd->callback([options] {
     // Check everything that needs no work before the input is read (a scene may run for a while).
-    const ImageSize size = parse_image_size(options->size);
+    const ImageSize size = parse_image_size(options->size, "--size");
     std::optional<OrbitView> view;
     if (!options->view.empty()) view = parse_view(options->view);
     RenderOptions render;

@@ -162,9 +162,9 @@ void add_resample_command(CLI::App& app) {
       cmd->add_option("--grid", options->resampling.grid,
                       "N cells: h = 1/N when the input lies within the unit square/cube, else its bounding box's "
                       "longest side / N")
-          ->check(CLI::PositiveNumber);
+          ->check(in_range(ranges::kGridCells));
   cmd->add_option("--spacing", options->resampling.spacing, "grid spacing h, in the input's units")
-      ->check(CLI::PositiveNumber)
+      ->check(in_range(ranges::kSpacing))
       ->excludes(grid);
   cmd->add_option("--dim", options->dimension, "read the input as 2D or 3D (default: from the file)")
       ->check(CLI::IsMember({2, 3}));

@@ -5,8 +5,14 @@
 #include <string>
 
 #include "core/run/flow_test.hpp"
+#include "core/util/parameter_ranges.hpp"
 
 namespace amls::app {
+
+// Checks an option's value against one of core/util/parameter_ranges.hpp's
+// ranges, with the same message as a scene's key: "--KEY: must be within [MIN,
+// MAX] (MEANING), got VALUE". Non-numbers and NaN are refused.
+CLI::Validator in_range(const ParameterRange& range);
 
 void add_threads_option(CLI::App& cmd, int& threads);
 // --variant: exact or interpolated (the grid walk); with `ray_tracing`, also

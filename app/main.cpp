@@ -4,8 +4,11 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "core/util/interrupt.hpp"
 
 int main(int argc, char** argv) {
+  // Ctrl+C stops the running work; commands write their outputs only once it is done.
+  amls::stop_work_on_interrupt();
   CLI::App app{
       "amls - deforming point-set (AMLS) surfaces with grid-based resampling\n"
       "(Resampling Strategies for Deforming MLS Surfaces). Run 'amls <command> --help' for a command's options."};
@@ -22,6 +25,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const std::exception& e) {
+    // The work stopped on Ctrl+C, whether it says so (amls::Cancelled) or a
+    // step wrapped the stop in its own message.
+    if (amls::interrupt_requested()) {
+      std::cerr << "\namls: interrupted: stopped without writing any output\n";
+      return amls::kInterruptedExitStatus;
+    }
     std::cerr << "amls: error: " << e.what() << "\n";
     return 1;
   }

@@ -15,6 +15,7 @@
 #include "core/run/scene_state.hpp"
 #include "core/surface/curve_tracing.hpp"
 #include "core/surface/metrics.hpp"
+#include "core/util/parameter_ranges.hpp"
 #include "render/point_data.hpp"
 
 namespace amls {
@@ -23,12 +24,6 @@ namespace {
 
 // Meshes without a given spacing are sampled at their bounding box's diagonal over this.
 constexpr double kMeshSamplesPerDiagonal = 200.0;
-
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 // Every point drawable: the renderer would skip the others silently, but a file with
 // a broken point is an error worth telling.
@@ -98,8 +93,7 @@ Picture scene_picture(const Scene<D>& scene, const PictureInputOptions& options)
 }
 
 Picture file_picture(const std::string& path, const PictureInputOptions& options) {
-  if (options.spacing != 0.0 && !(options.spacing > 0.0 && std::isfinite(options.spacing)))
-    throw std::invalid_argument("the spacing must be a positive number, got " + format_number(options.spacing));
+  if (options.spacing != 0.0) check_range("--spacing", options.spacing, ranges::kSpacing);
   Picture picture;
   SurfaceSampleOptions sampling;
   sampling.dimension = options.dimension;
@@ -173,8 +167,7 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
 }  // namespace
 
 Picture load_picture(const std::string& path, const PictureInputOptions& options) {
-  if (!(options.radius_factor > 0.0) || !std::isfinite(options.radius_factor))
-    throw std::invalid_argument("the radius factor must be positive, got " + format_number(options.radius_factor));
+  check_range("--radius-factor", options.radius_factor, ranges::kRadiusFactor);
   Picture picture;
   if (lower_extension(path) == ".json") {
     if (options.spacing != 0.0)

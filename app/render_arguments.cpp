@@ -51,19 +51,4 @@ OrbitView parse_view(const std::string& text) {
   return view;
 }
 
-ImageSize parse_image_size(const std::string& text) {
-  const std::vector<std::string> parts = split(text, 'x');
-  auto dimension = [&](const std::string& part, const char* what) {
-    int value = 0;
-    const char* end = part.data() + part.size();
-    const auto [ptr, ec] = std::from_chars(part.data(), end, value);
-    if (part.empty() || ec != std::errc() || ptr != end || value < 1 || value > 16384)
-      throw std::invalid_argument(std::string("--size ") + what + " must be a whole number from 1 to 16384, got '" +
-                                  part + "' in '" + text + "'");
-    return value;
-  };
-  if (parts.size() != 2) throw std::invalid_argument("--size must be WIDTHxHEIGHT, e.g. 480x360, got '" + text + "'");
-  return {dimension(parts[0], "width"), dimension(parts[1], "height")};
-}
-
 }  // namespace amls

@@ -3,14 +3,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/util/parameter_ranges.hpp"
 #include "render/offscreen_context.hpp"
 
 namespace amls {
 
 namespace {
 
-constexpr int kMaxSupersample = 8;
-constexpr int kMaxImageSide = 16384;  // as OffscreenContext
+constexpr int kMaxSupersample = static_cast<int>(ranges::kSupersample.max);
+constexpr int kMaxImageSide = static_cast<int>(ranges::kImageSide.max);
 
 // Each pixel of the result is the mean of a factor x factor block of `large` (rounded to nearest).
 Image box_downsample(const Image& large, int factor) {

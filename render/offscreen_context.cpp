@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/util/parameter_ranges.hpp"
+
 // glad first: it must precede GL/gl.h, which osmesa.h includes (kept in order by hand).
 // clang-format off
 #include "render/gl.hpp"
@@ -12,8 +14,6 @@
 namespace amls {
 
 namespace {
-
-constexpr int kMaxSize = 16384;
 
 GLADapiproc osmesa_proc(const char* name) { return reinterpret_cast<GLADapiproc>(OSMesaGetProcAddress(name)); }
 
@@ -27,9 +27,8 @@ struct OffscreenContext::State {
 };
 
 OffscreenContext::OffscreenContext(int width, int height) : state_(std::make_unique<State>()) {
-  if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
-    throw std::invalid_argument("offscreen image size must be within 1..16384 on each side, got " +
-                                std::to_string(width) + "x" + std::to_string(height));
+  check_range("offscreen image width", width, ranges::kImageSide);
+  check_range("offscreen image height", height, ranges::kImageSide);
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
                             OSMESA_DEPTH_BITS,

@@ -12,7 +12,7 @@ namespace amls {
 class OffscreenContext {
  public:
   // Creates the context, makes it current and loads the GL functions (glad). Throws
-  // std::invalid_argument for a size outside 1..16384, std::runtime_error if OSMesa
+  // std::invalid_argument for a side outside ranges::kImageSide, std::runtime_error if OSMesa
   // cannot make a 3.3 core context.
   OffscreenContext(int width, int height);
   ~OffscreenContext();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
+#include "core/util/parameter_ranges.hpp"
 #include "render/headless.hpp"
 #include "render/splat_renderer.hpp"
 
@@ -39,11 +40,6 @@ struct OrbitView {
   std::optional<float> distance;
 };
 
-// An image's size in pixels.
-struct ImageSize {
-  int width = 800;
-  int height = 600;
-};
 
 // The job for a picture: its size, the camera (see the header comment; `view` is
 // for 3D pictures only, and throws std::invalid_argument for a 2D one) and options.

@@ -212,11 +212,7 @@ TEST_CASE("render picture: bad input gives a clear error, never a crash") {
   PictureInputOptions step;
   step.step = 1;
   CHECK_THROWS_AS(load_picture(nan_normal, step), std::invalid_argument);
-  // Sizes, views and colour modes.
-  CHECK(parse_image_size("480x360").width == 480);
-  CHECK(parse_image_size("480x360").height == 360);
-  for (const char* bad : {"0x10", "10x0", "480", "480x", "x360", "-4x4", "4x4x4", "20000x10", "4.5x4"})
-    CHECK_THROWS_AS(parse_image_size(bad), std::invalid_argument);
+  // Views and colour modes (sizes: test_parameter_ranges.cpp).
   CHECK(parse_view("30,20").distance == std::nullopt);
   CHECK(*parse_view("-45,10.5,3").distance == 3.0f);
   for (const char* bad : {"", "30", "30,", "a,b", "30,95", "30,20,0", "30,20,-1", "30,20,3,4", "nan,0", "30,inf"})

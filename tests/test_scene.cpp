@@ -103,7 +103,7 @@ TEST_CASE("scene: bad scenes are rejected with a message naming the file and wha
         std::string::npos);
   CHECK(error_of(edited("[0.5, 0.8]", "[0.5, 0.8, 0]"), dir)
             .find("stages[1].targets[0].handles[0]: expected an array of 2 numbers") != std::string::npos);
-  CHECK(error_of(edited("\"steps\": 4", "\"steps\": 0"), dir).find("stages[1].targets[0].steps: must be at least 1") !=
+  CHECK(error_of(edited("\"steps\": 4", "\"steps\": 0"), dir).find("stages[1].targets[0].steps: must be within [1, 100000] (steps), got 0") !=
         std::string::npos);
   CHECK(error_of(edited("\"steps\": 4", "\"steps\": 2.5"), dir).find("stages[1].targets[0].steps: expected a whole number") !=
         std::string::npos);
@@ -116,7 +116,7 @@ TEST_CASE("scene: bad scenes are rejected with a message naming the file and wha
             .find("shape.type: a sphere is a 3D shape, but the scene's dimension is 2") != std::string::npos);
   CHECK(error_of(edited("{\"cells\": 64}", "{\"cells\": 64, \"spacing\": 0.1}"), dir).find("grid: give exactly one") !=
         std::string::npos);
-  CHECK(error_of(edited("\"dimension\": 2", "\"dimension\": 4"), dir).find("dimension: must be 2 or 3") != std::string::npos);
+  CHECK(error_of(edited("\"dimension\": 2", "\"dimension\": 4"), dir).find("dimension: must be within [2, 3] (the dimension), got 4") != std::string::npos);
   CHECK(error_of(edited("\"shape\": {\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100},", ""), dir)
             .find("missing the required key 'shape'") != std::string::npos);
   CHECK(error_of(edited("{\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100}",

@@ -190,3 +190,23 @@ TEST_CASE("poll_cancel throws Cancelled only while a check says stop") {
   pool.set_cancel_check({});
   CHECK_NOTHROW(pool.poll_cancel());
 }
+
+TEST_CASE("pools start with the default cancellation check; a CancelScope puts the pool's own check back") {
+  std::atomic<bool> stop = false;
+  ThreadPool::set_default_cancel_check([&] { return stop.load(); });
+  ThreadPool pool(2);
+  ThreadPool::set_default_cancel_check({});
+  ThreadPool unchecked(2);
+  CHECK_NOTHROW(record_calls(pool, 100));
+  stop = true;
+  CHECK_THROWS_AS(record_calls(pool, 100), Cancelled);
+  CHECK_THROWS_AS(pool.poll_cancel(), Cancelled);
+  CHECK_NOTHROW(record_calls(unchecked, 100));  // made after the default was removed
+  stop = false;
+  {
+    CancelScope scope(pool, [] { return true; });
+    CHECK_THROWS_AS(record_calls(pool, 100), Cancelled);
+  }
+  stop = true;
+  CHECK_THROWS_AS(record_calls(pool, 100), Cancelled);  // the default check again, not none
+}

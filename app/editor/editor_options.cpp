@@ -3,27 +3,16 @@
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
+
+#include "core/util/parameter_ranges.hpp"
 
 namespace amls::editor {
 
 namespace {
 
-// "1280x800" -> (1280, 800).
-bool parse_size(const std::string& text, int& width, int& height) {
-  const auto x = text.find_first_of("xX");
-  if (x == std::string::npos) return false;
-  try {
-    std::size_t used_w = 0, used_h = 0;
-    const int w = std::stoi(text.substr(0, x), &used_w);
-    const int h = std::stoi(text.substr(x + 1), &used_h);
-    if (used_w != x || used_h != text.size() - x - 1 || w < 64 || h < 64 || w > 16384 || h > 16384) return false;
-    width = w;
-    height = h;
-    return true;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
+// The smallest window side the panels still fit in.
+constexpr int kMinWindowSide = 64;
 
 }  // namespace
 
@@ -47,8 +36,15 @@ std::optional<int> parse_editor_options(int argc, char** argv, EditorOptions& op
                  "write a line per frame and per event to this file (or set AMLS_EDITOR_DEBUG_LOG)");
   try {
     app.parse(argc, argv);
-    if (!size.empty() && !parse_size(size, options.width, options.height))
-      throw CLI::ValidationError("--size", "expected WxH between 64 and 16384, e.g. 1280x800, got " + size);
+    if (!size.empty()) {
+      try {
+        const ImageSize window = parse_image_size(size, "--size", kMinWindowSide);
+        options.width = window.width;
+        options.height = window.height;
+      } catch (const std::invalid_argument& e) {
+        throw CLI::ValidationError(e.what());
+      }
+    }
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }

@@ -8,6 +8,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "core/util/parameter_ranges.hpp"
+
 namespace amls {
 
 namespace {
@@ -21,8 +23,31 @@ struct EdgeUse {
   int triangles = 0;
 };
 
-std::size_t segments(double length, double spacing) {
-  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / spacing - 1e-9)));
+// Pieces of about `spacing` a length is cut into; a double, so that it may be
+// counted before it is known to be small.
+double segment_count(double length, double spacing) { return std::max(1.0, std::ceil(length / spacing - 1e-9)); }
+
+std::size_t segments(double length, double spacing) { return static_cast<std::size_t>(segment_count(length, spacing)); }
+
+// The samples sample_mesh makes of the triangles with a nonzero area normal,
+// counted without making them: each vertex and edge once, plus each
+// triangle's interior lattice, (n - 1)(n - 2) / 2 points for n segments.
+double sample_count(const TriangleMesh& mesh, const std::vector<Vec<3>>& area_normals, double spacing) {
+  const std::vector<Vec<3>>& v = mesh.vertices;
+  double count = static_cast<double>(v.size());  // an upper bound of the vertices used
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (area_normals[f].isZero(0.0)) continue;
+    const auto& t = mesh.triangles[f];
+    double longest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double length = (v[t[static_cast<std::size_t>((k + 1) % 3)]] - v[t[static_cast<std::size_t>(k)]]).norm();
+      longest = std::max(longest, length);
+      count += 0.5 * (segment_count(length, spacing) - 1.0);  // an edge is shared by about two triangles
+    }
+    const double n = segment_count(longest, spacing);
+    count += 0.5 * (n - 1.0) * (n - 2.0);
+  }
+  return count;
 }
 
 }  // namespace
@@ -75,6 +100,16 @@ MeshSamples sample_mesh(const TriangleMesh& mesh, double spacing) {
     if (e.triangles == 1) ++out.boundary_edges;
     if (e.triangles > 2) ++out.nonmanifold_edges;
   }
+  // Bounded before any is made: a mesh with a stray far vertex would otherwise
+  // be sampled for hours. Samples grow as 1 / spacing^2.
+  const double count = sample_count(mesh, area_normals, spacing);
+  if (!ranges::kMeshSamples.contains(count))
+    throw std::invalid_argument("mesh sampling: spacing " + format_number(spacing) + " would make about " +
+                                format_number(count) + " samples, more than " +
+                                format_number(ranges::kMeshSamples.max) + " (the mesh spans " +
+                                format_number(std::sqrt(extent2)) + " across); a spacing of " +
+                                format_number(spacing * std::sqrt(count / ranges::kMeshSamples.max) * 1.01) +
+                                " or more would fit");
   out.flipped = out.boundary_edges == 0 && out.nonmanifold_edges == 0 && volume6 < 0.0;
   const double sign = out.flipped ? -1.0 : 1.0;
   // A mean normal that cancels out (a sheet folded onto itself) falls back to `fallback`.

@@ -11,15 +11,32 @@
 #include "core/run/ray_tracing_surface.hpp"
 #include "core/run/settle.hpp"
 #include "core/geometry/shapes.hpp"
+#include "core/util/parameter_ranges.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace amls {
 
 namespace {
 
 void validate(const FlowTestConfig& c) {
-  if (c.grid < 8) throw std::invalid_argument("--grid must be at least 8, got " + std::to_string(c.grid));
-  if (!(c.dt > 0.0)) throw std::invalid_argument("--dt must be positive");
-  if (c.threads < 1) throw std::invalid_argument("--threads must be at least 1");
+  check_range("--grid", c.grid, ranges::kFlowTestGridCells);
+  check_range("--radius-factor", c.radius_factor, ranges::kRadiusFactor);
+  check_range("--min-weight", c.min_weight, ranges::kMinWeight);
+  check_range("--dt", c.dt, ranges::kTimeStep);
+  check_range("--substeps", c.substeps, ranges::kSubsteps);
+  check_range("--threads", c.threads, ranges::kThreads);
+  check_range("--ray-samples", c.ray.samples_per_cell, ranges::kRaySamples);
+  check_range("--cluster-threshold", c.ray.cluster_threshold, ranges::kClusterThreshold);
+}
+
+// The points a test starts from, checked before they are made: `count` is
+// what the grid implies, and the message names the largest grid that fits.
+std::size_t initial_points(double count, const FlowTestConfig& config, int dimension) {
+  if (count <= ranges::kPoints.max) return static_cast<std::size_t>(count);
+  const double fitting = config.grid * std::pow(ranges::kPoints.max / count, 1.0 / (dimension - 1));
+  throw std::invalid_argument("--grid " + std::to_string(config.grid) + " would start from " + format_number(count) +
+                              " points, more than " + format_number(ranges::kPoints.max) + "; use --grid " +
+                              std::to_string(static_cast<long long>(fitting)) + " or less");
 }
 
 // The work counters of one step, by loop.
@@ -152,7 +169,7 @@ FlowTestRun<2> run_vortex_test(const FlowTestConfig& config, const FlowProgress&
   const Vec<2> center(0.5, 0.75);
   const double radius = 0.15;
   auto sample = [&](double spacing) {
-    return sample_circle(center, radius, static_cast<std::size_t>(std::ceil(2.0 * std::numbers::pi * radius / spacing)));
+    return sample_circle(center, radius, initial_points(std::ceil(2.0 * std::numbers::pi * radius / spacing), config, 2));
   };
   auto measure = [&](const AmlsSurface<2>& surface, ThreadPool& pool, FlowTestReport& report) {
     const CircleError error = circle_l1_error(surface, center, radius, pool);
@@ -167,7 +184,7 @@ FlowTestRun<3> run_enright_test(const FlowTestConfig& config, const FlowProgress
   const double radius = 0.15;
   auto sample = [&](double spacing) {
     const double area = 4.0 * std::numbers::pi * radius * radius;
-    return sample_sphere(center, radius, static_cast<std::size_t>(std::ceil(area / (spacing * spacing))));
+    return sample_sphere(center, radius, initial_points(std::ceil(area / (spacing * spacing)), config, 3));
   };
   auto measure = [&](const AmlsSurface<3>& surface, ThreadPool& pool, FlowTestReport& report) {
     const SphereError error = sphere_volume_error(surface, center, radius, pool);

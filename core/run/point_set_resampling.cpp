@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/geometry/sample_spacing.hpp"
+#include "core/util/parameter_ranges.hpp"
 #include "core/util/process_memory.hpp"
 
 namespace amls {
@@ -54,12 +55,11 @@ double median_of(std::vector<double> values) {
 template <int D>
 SpacingChoice choose_spacing(const std::vector<Vec<D>>& positions, const PointSetResampling& options) {
   if (options.spacing != 0.0) {
-    if (!(options.spacing > 0.0) || !std::isfinite(options.spacing))
-      throw std::invalid_argument("--spacing must be a positive number, got " + std::to_string(options.spacing));
+    check_range("--spacing", options.spacing, ranges::kSpacing);
     return {options.spacing, "--spacing " + number(options.spacing)};
   }
   if (options.grid != 0) {
-    if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1, got " + std::to_string(options.grid));
+    check_range("--grid", options.grid, ranges::kGridCells);
     if (positions.empty()) return {1.0 / options.grid, "--grid " + std::to_string(options.grid) + " over the unit box"};
     Vec<D> lo, hi;
     bounds(positions, lo, hi);
@@ -109,10 +109,8 @@ ResamplingCost check_resampling_cost(int dimension, double extent, double h, con
 
 template <int D>
 Grid<D> resampling_grid(const PointSet<D>& points, double h, double radius_factor) {
-  if (!(h > 0.0) || !std::isfinite(h))
-    throw std::invalid_argument("the grid spacing h must be a positive number, got " + std::to_string(h));
-  if (!(radius_factor > 0.0) || !std::isfinite(radius_factor))
-    throw std::invalid_argument("--radius-factor must be positive, got " + std::to_string(radius_factor));
+  check_range("the grid spacing h", h, ranges::kSpacing);
+  check_range("--radius-factor", radius_factor, ranges::kRadiusFactor);
   if (points.empty()) return Grid<D>(Vec<D>::Zero(), h);
   Vec<D> lo, hi;
   bounds(points.positions, lo, hi);
@@ -141,8 +139,7 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
     if (!points.normals[i].allFinite() || points.normals[i].isZero(0.0))
       throw std::invalid_argument("resampling needs oriented normals: point " + std::to_string(i) +
                                   " has a zero or non-finite normal");
-  if (options.threads < 1)
-    throw std::invalid_argument("--threads must be at least 1, got " + std::to_string(options.threads));
+  check_range("--threads", options.threads, ranges::kThreads);
   const double h = choose_spacing(points.positions, options).h;
   const Grid<D> grid = resampling_grid(points, h, options.radius_factor);
   if (points.size() > static_cast<std::size_t>(kSpacingNeighbours))

@@ -7,14 +7,16 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <numbers>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/geometry/sample_spacing.hpp"
 #include "core/io/file_format.hpp"
 #include "core/io/mesh_io.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/util/parameter_ranges.hpp"
 
 namespace amls {
 
@@ -62,12 +64,6 @@ std::string type_name(const json& j) {
   }
 }
 
-std::string describe(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 double as_number(const json& j, const Place& at) {
   if (!j.is_number()) at.fail("expected a number, got " + type_name(j));
   const double value = j.get<double>();
@@ -77,15 +73,34 @@ double as_number(const json& j, const Place& at) {
 
 double as_positive(const json& j, const Place& at) {
   const double value = as_number(j, at);
-  if (!(value > 0.0)) at.fail("must be positive, got " + describe(value));
+  if (!(value > 0.0)) at.fail("must be positive, got " + format_number(value));
   return value;
 }
 
-std::size_t as_count(const json& j, const Place& at, std::size_t least) {
+// A number within `range` (core/util/parameter_ranges.hpp), with the command line's message.
+double as_in_range(const json& j, const Place& at, const ParameterRange& range) {
+  const double value = as_number(j, at);
+  if (!range.contains(value)) at.fail(out_of_range_text(value, range));
+  return value;
+}
+
+// A whole number within `range`.
+std::size_t as_count(const json& j, const Place& at, const ParameterRange& range) {
   if (!j.is_number_integer()) at.fail("expected a whole number, got " + (j.is_number() ? j.dump() : type_name(j)));
-  if (j.is_number_unsigned() ? j.get<std::uint64_t>() < least : j.get<std::int64_t>() < static_cast<std::int64_t>(least))
-    at.fail("must be at least " + std::to_string(least) + ", got " + j.dump());
-  return static_cast<std::size_t>(j.get<std::uint64_t>());
+  const double value =
+      j.is_number_unsigned() ? static_cast<double>(j.get<std::uint64_t>()) : static_cast<double>(j.get<std::int64_t>());
+  if (!range.contains(value)) at.fail(out_of_range_text(value, range));
+  return static_cast<std::size_t>(value);
+}
+
+// Refuses a non-finite number anywhere in the file, read or not, naming its
+// place (JSON has no literal for one, but 1e999 parses to infinity).
+void check_finite_numbers(const json& j, const Place& at) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) at.fail("not a finite number");
+  if (j.is_array())
+    for (std::size_t i = 0; i < j.size(); ++i) check_finite_numbers(j[i], at.index(i));
+  if (j.is_object())
+    for (auto it = j.begin(); it != j.end(); ++it) check_finite_numbers(it.value(), at.key(it.key()));
 }
 
 std::string as_string(const json& j, const Place& at) {
@@ -165,23 +180,23 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
   if ((plane_only && D != 2) || (space_only && D != 3))
     type_at.fail(std::string("a ") + to_string(shape.type) + " is a " + (plane_only ? "2D" : "3D") +
                  " shape, but the scene's dimension is " + std::to_string(D));
-  if (const json* v = r.find("spacing")) shape.spacing = as_positive(*v, at.key("spacing"));
+  if (const json* v = r.find("spacing")) shape.spacing = as_in_range(*v, at.key("spacing"), ranges::kSpacing);
   auto read_center = [&] {
     if (const json* v = r.find("center")) shape.center = as_vec<D>(*v, at.key("center"));
   };
   auto read_radius = [&] {
     if (const json* v = r.find("radius")) shape.radius = as_positive(*v, at.key("radius"));
   };
-  auto read_points = [&](std::size_t least) {
+  auto read_points = [&](double least) {
     if (const json* v = r.find("points")) {
       if (shape.spacing > 0.0) at.key("points").fail("give either 'points' or 'spacing', not both");
-      shape.points = as_count(*v, at.key("points"), least);
+      shape.points = as_count(*v, at.key("points"), ParameterRange{least, ranges::kPoints.max, ranges::kPoints.meaning});
     }
   };
   auto positive_vec = [&](const char* key) {
     const Vec<D> v = as_vec<D>(r.require(key), at.key(key));
     for (int a = 0; a < D; ++a)
-      if (!(v[a] > 0.0)) at.key(key).index(static_cast<std::size_t>(a)).fail("must be positive, got " + describe(v[a]));
+      if (!(v[a] > 0.0)) at.key(key).index(static_cast<std::size_t>(a)).fail("must be positive, got " + format_number(v[a]));
     return v;
   };
   switch (shape.type) {
@@ -200,7 +215,7 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
       shape.major_radius = as_positive(r.require("major_radius"), at.key("major_radius"));
       shape.minor_radius = as_positive(r.require("minor_radius"), at.key("minor_radius"));
       if (!(shape.minor_radius < shape.major_radius))
-        at.key("minor_radius").fail("must be smaller than major_radius (" + describe(shape.major_radius) + ")");
+        at.key("minor_radius").fail("must be smaller than major_radius (" + format_number(shape.major_radius) + ")");
       break;
     case ShapeType::rounded_box:
       read_center();
@@ -208,7 +223,7 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
       shape.radius = as_number(r.require("radius"), at.key("radius"));
       if (!(shape.radius >= 0.0) || shape.radius > shape.half_extents.minCoeff())
         at.key("radius").fail("the corner radius must lie in [0, smallest half extent = " +
-                              describe(shape.half_extents.minCoeff()) + "], got " + describe(shape.radius));
+                              format_number(shape.half_extents.minCoeff()) + "], got " + format_number(shape.radius));
       break;
     case ShapeType::file: {
       const Place path_at = at.key("path");
@@ -230,6 +245,49 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
   return shape;
 }
 
+// The length (2D) or area (3D) of a built-in shape, or an upper bound of it; 0 for a file.
+template <int D>
+double shape_measure(const SceneShape<D>& s) {
+  constexpr double pi = std::numbers::pi;
+  switch (s.type) {
+    case ShapeType::circle:
+      return 2.0 * pi * s.radius;
+    case ShapeType::sphere:
+      return 4.0 * pi * s.radius * s.radius;
+    case ShapeType::ellipse:
+      return 2.0 * pi * s.semi_axes.maxCoeff();
+    case ShapeType::torus:
+      return 4.0 * pi * pi * s.major_radius * s.minor_radius;
+    case ShapeType::rounded_box: {
+      const Vec<D> e = s.half_extents;
+      if constexpr (D == 2) return 4.0 * (e[0] + e[1]);
+      else return 8.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
+    }
+    case ShapeType::file:
+      break;
+  }
+  return 0.0;
+}
+
+// Refuses a built-in shape whose samples, or the points resampling it at h
+// makes (about one per cell it crosses), would be more than ranges::kPoints
+// allows, before any is made.
+template <int D>
+void check_point_estimate(const Scene<D>& scene, const Place& at) {
+  const double measure = shape_measure(scene.shape);
+  const double initial = scene.shape.points > 0 ? static_cast<double>(scene.shape.points)
+                                                 : measure / std::pow(scene.sample_spacing(), D - 1);
+  const double resampled = measure / std::pow(scene.h(), D - 1);
+  const double estimate = std::max(initial, resampled);
+  if (estimate <= ranges::kPoints.max) return;
+  const double fitting = std::max(scene.sample_spacing(), scene.h()) *
+                         std::pow(estimate / ranges::kPoints.max, 1.0 / (D - 1));
+  at.fail("sampling this " + std::string(to_string(scene.shape.type)) + " at spacing " +
+          format_number(scene.sample_spacing()) + " and resampling it at h = " + format_number(scene.h()) +
+          " makes about " + format_number(estimate) + " points, more than " + format_number(ranges::kPoints.max) +
+          "; a spacing and h of " + format_number(fitting) + " or more would fit");
+}
+
 template <int D>
 DeformationHistory<D> parse_stages(const json& j, const Place& at) {
   if (!j.is_array()) at.fail("expected an array of stages, got " + type_name(j));
@@ -239,6 +297,9 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at) {
     const Place stage_at = at.index(s);
     ObjectReader stage(j[s], stage_at);
     history.begin_stage(as_points<D>(stage.require("handles"), stage_at.key("handles")));
+    const std::size_t handles = history.stages.back().start.size();
+    if (!ranges::kHandles.contains(static_cast<double>(handles)))
+      stage_at.key("handles").fail(out_of_range_text(static_cast<double>(handles), ranges::kHandles));
     const json& targets = stage.require("targets");
     const Place targets_at = stage_at.key("targets");
     if (!targets.is_array()) targets_at.fail("expected an array of targets, got " + type_name(targets));
@@ -247,7 +308,7 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at) {
       ObjectReader target(targets[t], target_at);
       HandleTarget<D> next;
       next.handles = as_points<D>(target.require("handles"), target_at.key("handles"));
-      next.steps = as_count(target.require("steps"), target_at.key("steps"), 1);
+      next.steps = as_count(target.require("steps"), target_at.key("steps"), ranges::kTargetSteps);
       target.finish();
       history.stages.back().targets.push_back(std::move(next));
     }
@@ -259,6 +320,8 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at) {
     // Its messages name the place (stages[i]...) already.
     at.fail_in_file(e.what());
   }
+  const double steps = static_cast<double>(history.total_steps());
+  if (!ranges::kSceneSteps.contains(steps)) at.fail(out_of_range_text(steps, ranges::kSceneSteps));
   return history;
 }
 
@@ -295,12 +358,8 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
     const json* cells = grid.find("cells");
     const json* spacing = grid.find("spacing");
     if ((cells == nullptr) == (spacing == nullptr)) grid_at.fail("give exactly one of 'cells' (h = 1/cells) or 'spacing' (h)");
-    if (cells) {
-      const std::size_t n = as_count(*cells, grid_at.key("cells"), 1);
-      if (n > (std::size_t{1} << 20)) grid_at.key("cells").fail("at most 1048576 cells per unit length");
-      scene.grid_cells = static_cast<int>(n);
-    }
-    if (spacing) scene.grid_spacing = as_positive(*spacing, grid_at.key("spacing"));
+    if (cells) scene.grid_cells = static_cast<int>(as_count(*cells, grid_at.key("cells"), ranges::kGridCells));
+    if (spacing) scene.grid_spacing = as_in_range(*spacing, grid_at.key("spacing"), ranges::kSpacing);
     grid.finish();
   }
   scene.shape = parse_shape<D>(r.require("shape"), root.key("shape"), path);
@@ -310,7 +369,9 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
     scene.grid_spacing = spacing_of_file<D>(scene.shape.resolved_file, root.key("shape").key("path"));
     scene.grid_from_file = true;
   }
-  if (const json* v = r.find("radius_factor")) scene.radius_factor = as_positive(*v, root.key("radius_factor"));
+  check_point_estimate(scene, root.key("shape"));
+  if (const json* v = r.find("radius_factor"))
+    scene.radius_factor = as_in_range(*v, root.key("radius_factor"), ranges::kRadiusFactor);
   if (const json* v = r.find("variant")) {
     try {
       scene.variant = parse_variant(as_string(*v, root.key("variant")));
@@ -328,7 +389,7 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
         at.key("kind").fail(e.what());
       }
     }
-    if (const json* alpha = deformation.find("alpha")) scene.alpha = as_positive(*alpha, at.key("alpha"));
+    if (const json* alpha = deformation.find("alpha")) scene.alpha = as_in_range(*alpha, at.key("alpha"), ranges::kAlpha);
     deformation.finish();
   }
   scene.history = parse_stages<D>(r.require("stages"), root.key("stages"));
@@ -377,10 +438,10 @@ AnyScene scene_from_json(const json& j, const std::string& path) {
   if (!j.is_object()) root.fail("expected a JSON object at the top, got " + type_name(j));
   const auto it = j.find("dimension");
   if (it == j.end()) root.fail("missing the required key 'dimension' (2 or 3)");
-  const std::size_t dimension = as_count(*it, root.key("dimension"), 2);
+  check_finite_numbers(j, root);
+  const std::size_t dimension = as_count(*it, root.key("dimension"), ParameterRange{2, 3, "the dimension"});
   if (dimension == 2) return parse_scene<2>(j, path);
-  if (dimension == 3) return parse_scene<3>(j, path);
-  root.key("dimension").fail("must be 2 or 3, got " + it->dump());
+  return parse_scene<3>(j, path);
 }
 
 AnyScene read_scene(const std::string& path) {

@@ -7,16 +7,15 @@
 
 #include "core/surface/surface_offsets.hpp"
 #include "core/math/weight.hpp"
+#include "core/util/parameter_ranges.hpp"
 
 namespace amls {
 
 template <int D>
 AmlsSurface<D>::AmlsSurface(const Grid<D>& grid, const AmlsParameters& parameters)
     : grid_(grid), parameters_(parameters), radius_(parameters.radius_factor * grid.spacing()) {
-  if (!(parameters.radius_factor > 0.0) || !std::isfinite(parameters.radius_factor))
-    throw std::invalid_argument("radius factor must be positive, got " + std::to_string(parameters.radius_factor));
-  if (!(parameters.min_weight >= 0.0))
-    throw std::invalid_argument("minimum weight must be non-negative, got " + std::to_string(parameters.min_weight));
+  check_range("radius factor", parameters.radius_factor, ranges::kRadiusFactor);
+  check_range("minimum weight", parameters.min_weight, ranges::kMinWeight);
 }
 
 template <int D>
@@ -39,6 +38,7 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   // Not hashed until the index is whole (the build can throw, or be cancelled).
   hashed_ = ready_ = false;
   index_.build(points_.positions, grid_.origin(), radius_, pool);
+  pool.poll_cancel();  // the build's sort and the copy below are serial: a stop between them
   // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
   const std::vector<std::uint32_t>& order = index_.order();
   PointSet<D> sorted;

@@ -146,7 +146,9 @@ RayScan scan_rays(const AmlsSurface<D>& surface, const Vec<D>& center, std::size
     scan.reason = "the point set is empty";
     return scan;
   }
-  const auto [r_lo, r_hi] = radial_range(surface, center);
+  // Named copies, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+  const auto range = radial_range(surface, center);
+  const double r_lo = range.first, r_hi = range.second;
   const double step = 0.5 * surface.grid().spacing();
   // Rays are scanned in parallel and accumulated in order, so sums do not
   // depend on the thread count.

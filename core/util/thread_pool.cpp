@@ -19,9 +19,16 @@ constexpr double kSubrangeSeconds = 1e-3;
 // two edits) goes to sleep at once on a human scale.
 constexpr std::chrono::microseconds kSpin{500};
 
+ThreadPool::CancelCheck& default_cancel_check() {
+  static ThreadPool::CancelCheck check;
+  return check;
+}
+
 }  // namespace
 
-ThreadPool::ThreadPool(int threads) {
+void ThreadPool::set_default_cancel_check(CancelCheck check) { default_cancel_check() = std::move(check); }
+
+ThreadPool::ThreadPool(int threads) : check_(default_cancel_check()) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (int worker = 1; worker < threads; ++worker) workers_.emplace_back([this] { worker_loop(); });
 }

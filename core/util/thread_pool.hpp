@@ -93,6 +93,12 @@ class ThreadPool {
   // Installs the check polled by parallel_for (an empty one removes it). Not
   // while a parallel_for runs.
   void set_cancel_check(CancelCheck check) { check_ = std::move(check); }
+  const CancelCheck& cancel_check() const { return check_; }
+
+  // The check every pool constructed afterwards starts with (empty: none), for
+  // a program whose work all stops on one flag, as the command line's on
+  // Ctrl+C (core/util/interrupt.hpp). Call it before any pool exists.
+  static void set_default_cancel_check(CancelCheck check);
 
  private:
   // One direction of hand-off: a thread waits until `ready` holds.
@@ -128,19 +134,20 @@ class ThreadPool {
   std::atomic<bool> cancelled_ = false;
 };
 
-// Gives a pool a cancellation check for a scope and removes it at the end, so
-// that later work (e.g. the next command) does not poll a stale one.
+// Gives a pool a cancellation check for a scope and puts the one it had back at
+// the end, so that later work (e.g. the next command) does not poll a stale one.
 class CancelScope {
  public:
-  CancelScope(ThreadPool& pool, ThreadPool::CancelCheck check) : pool_(pool) {
+  CancelScope(ThreadPool& pool, ThreadPool::CancelCheck check) : pool_(pool), previous_(pool.cancel_check()) {
     pool_.set_cancel_check(std::move(check));
   }
-  ~CancelScope() { pool_.set_cancel_check({}); }
+  ~CancelScope() { pool_.set_cancel_check(std::move(previous_)); }
   CancelScope(const CancelScope&) = delete;
   CancelScope& operator=(const CancelScope&) = delete;
 
  private:
   ThreadPool& pool_;
+  ThreadPool::CancelCheck previous_;
 };
 
 }  // namespace amls
