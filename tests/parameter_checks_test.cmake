@@ -17,13 +17,13 @@ string(JSON scene SET "${scene}" radius_factor "3e-06")
 file(WRITE "${WORK_DIR}/tiny_radius.json" "${scene}")
 amls_fails("tiny_radius.json: radius_factor: ${range}" "${out}.json" deform "${WORK_DIR}/tiny_radius.json" --json "${out}.json")
 
-# A mesh whose one vertex has a typo (07363029 for 0.7363029).
+# A mesh whose one vertex has a typo (07363029 for 0.7363029), sampled at the spacing meant for it.
 file(WRITE "${WORK_DIR}/typo.obj"
   "v 0.2 0.2 0.2\nv 0.8 0.2 0.2\nv 0.8 0.8 0.2\nv 0.2 0.8 0.2\nv 0.2 0.2 0.8\nv 0.8 0.2 0.8\n"
   "v 07363029 0.255480 0.607000\nv 0.2 0.8 0.8\n"
   "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n")
 amls_fails("typo.obj: mesh sampling: spacing 0.015625 would make about 4.44123e+17 samples, more than 2e+07"
-           "${out}.ply" resample "${WORK_DIR}/typo.obj" --grid 64 --out "${out}.ply")
+           "${out}.ply" resample "${WORK_DIR}/typo.obj" --spacing 0.015625 --out "${out}.ply")
 
 # Other options, one of each kind.
 amls_fails("--grid: must be within [8, 65536] (cells per unit length), got 4" "${out}.json" vortex --grid 4 --json "${out}.json")
