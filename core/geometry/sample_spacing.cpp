@@ -9,15 +9,11 @@
 
 namespace amls {
 
-namespace {
-
 double median_of(std::vector<double> values) {
   auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
 }
-
-}  // namespace
 
 template <int D>
 std::vector<double> kth_neighbour_distances(const std::vector<Vec<D>>& positions, int k) {

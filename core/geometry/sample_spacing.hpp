@@ -18,6 +18,9 @@
 
 namespace amls {
 
+// The median of `values` (the upper one of an even count); `values` must not be empty.
+double median_of(std::vector<double> values);
+
 inline constexpr int kSpacingNeighbours = 4;
 inline constexpr double kSpacingNeighbourDivisor = 2.0;
 

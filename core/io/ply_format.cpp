@@ -241,15 +241,6 @@ Header read_header(std::istream& in, const std::string& path) {
 }
 
 VertexLayout vertex_layout(const Header& header, const std::string& path) {
-  static constexpr std::array<std::pair<std::string_view, int>, 9> kSlots{{{"x", 0},
-                                                                           {"y", 1},
-                                                                           {"z", 2},
-                                                                           {"nx", 3},
-                                                                           {"ny", 4},
-                                                                           {"nz", 5},
-                                                                           {"normal_x", 3},
-                                                                           {"normal_y", 4},
-                                                                           {"normal_z", 5}}};
   VertexLayout layout;
   const auto vertex =
       std::find_if(header.elements.begin(), header.elements.end(), [](const Element& e) { return e.name == "vertex"; });
@@ -257,9 +248,7 @@ VertexLayout vertex_layout(const Header& header, const std::string& path) {
   layout.element = static_cast<std::size_t>(vertex - header.elements.begin());
   std::array<const Property*, 6> found{};
   for (const Property& p : vertex->properties) {
-    int slot = -1;
-    for (const auto& [name, s] : kSlots)
-      if (p.name == name) slot = s;
+    const int slot = coordinate_slot(p.name);
     layout.slot.push_back(slot);
     if (slot < 0) continue;
     if (p.is_list) fail(path, "vertex property '" + p.name + "' is a list; expected a single value");

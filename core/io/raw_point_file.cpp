@@ -1,9 +1,11 @@
 #include "core/io/raw_point_file.hpp"
 
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 namespace amls::detail {
 
@@ -134,6 +136,21 @@ void FileSink::flush() {
     throw std::runtime_error(path_ + ": write failed" + (error ? std::string(": ") + std::strerror(error) : ""));
   }
   buffer_.clear();
+}
+
+int coordinate_slot(std::string_view name) {
+  static constexpr std::array<std::pair<std::string_view, int>, 9> kSlots{{{"x", 0},
+                                                                           {"y", 1},
+                                                                           {"z", 2},
+                                                                           {"nx", 3},
+                                                                           {"ny", 4},
+                                                                           {"nz", 5},
+                                                                           {"normal_x", 3},
+                                                                           {"normal_y", 4},
+                                                                           {"normal_z", 5}}};
+  for (const auto& [known, slot] : kSlots)
+    if (name == known) return slot;
+  return -1;
 }
 
 }  // namespace amls::detail

@@ -21,6 +21,10 @@
 
 namespace amls::detail {
 
+// Column or property names and the coordinate they hold: 0-2 the position, 3-5 the
+// normal. PLY properties and text-column headers use the same names.
+int coordinate_slot(std::string_view name);
+
 struct RawPointFile {
   std::string path;
   PointSet<3> points;  // normals all zero when has_normals is false

@@ -59,25 +59,16 @@ bool split_fields(std::string_view line, char separator, std::vector<std::string
 // The columns a header line names; `fail_here` throws.
 template <typename Fail>
 Columns header_columns(std::vector<std::string_view> names, Fail&& fail_here) {
-  static constexpr std::array<std::pair<std::string_view, std::size_t>, 9> kNames{{{"x", 0},
-                                                                                   {"y", 1},
-                                                                                   {"z", 2},
-                                                                                   {"nx", 3},
-                                                                                   {"ny", 4},
-                                                                                   {"nz", 5},
-                                                                                   {"normal_x", 3},
-                                                                                   {"normal_y", 4},
-                                                                                   {"normal_z", 5}}};
   if (names[0].starts_with("//")) names[0] = trim(names[0].substr(2));
   Columns columns;
   columns.count = names.size();
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string name = lower_case(names[k]);
-    for (const auto& [known, slot] : kNames) {
-      if (name != known) continue;
-      if (columns.of[slot] != kNoColumn) fail_here("the header names '" + std::string(known) + "' twice");
-      columns.of[slot] = k;
-    }
+    const int slot = coordinate_slot(name);
+    if (slot < 0) continue;
+    const auto at = static_cast<std::size_t>(slot);
+    if (columns.of[at] != kNoColumn) fail_here("the header names '" + name + "' twice");
+    columns.of[at] = k;
   }
   if (columns.of[0] == kNoColumn || columns.of[1] == kNoColumn)
     fail_here("the header line names no 'x' and 'y' columns (or, if it is not a header, " + quoted(names[0]) +

@@ -44,12 +44,6 @@ void bounds(const std::vector<Vec<D>>& positions, Vec<D>& lo, Vec<D>& hi) {
   }
 }
 
-double median_of(std::vector<double> values) {
-  auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 }  // namespace
 
 template <int D>
