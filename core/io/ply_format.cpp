@@ -141,6 +141,63 @@ struct VertexLayout {
   std::size_t face_property = kNone;  // its `vertex_indices` (or `vertex_index`) list
 };
 
+// Header lines, one keyword each; `fail_here` throws with the line's number.
+template <typename Fail>
+Encoding format_line(const std::vector<std::string_view>& words, Fail&& fail_here) {
+  if (words.size() != 3) fail_here("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+  Encoding encoding = Encoding::ascii;
+  if (words[1] == "binary_little_endian") {
+    encoding = Encoding::binary_little_endian;
+  } else if (words[1] == "binary_big_endian") {
+    encoding = Encoding::binary_big_endian;
+  } else if (words[1] != "ascii") {
+    fail_here("unknown format '" + std::string(words[1]) + "' (expected ascii, binary_little_endian or binary_big_endian)");
+  }
+  if (words[2] != "1.0") fail_here("unsupported PLY version '" + std::string(words[2]) + "' (expected 1.0)");
+  return encoding;
+}
+
+template <typename Fail>
+Element element_line(const std::vector<std::string_view>& words, const Header& header, Fail&& fail_here) {
+  if (words.size() != 3) fail_here("expected 'element NAME COUNT'");
+  Element element;
+  element.name = std::string(words[1]);
+  const std::optional<std::int64_t> count = parse_integer(words[2]);
+  if (count && *count < 0) fail_here("element '" + element.name + "' has a negative count (" + std::string(words[2]) + ")");
+  if (!count) fail_here("element '" + element.name + "' count '" + std::string(words[2]) + "' is not a valid number");
+  element.count = static_cast<std::uint64_t>(*count);
+  for (const Element& e : header.elements)
+    if (e.name == element.name) fail_here("a second element named '" + element.name + "'");
+  return element;
+}
+
+template <typename Fail>
+Property property_line(const std::vector<std::string_view>& words, const Element& element, Fail&& fail_here) {
+  Property property;
+  auto type_of = [&](std::string_view name) {
+    const std::optional<ScalarType> type = scalar_type(name);
+    if (!type) fail_here("unknown property type '" + std::string(name) + "'");
+    return *type;
+  };
+  if (words.size() >= 2 && words[1] == "list") {
+    if (words.size() != 5) fail_here("expected 'property list COUNT_TYPE ITEM_TYPE NAME'");
+    property.is_list = true;
+    property.count_type = type_of(words[2]);
+    if (!is_integer(property.count_type))
+      fail_here("a list's length type must be an integer type, not '" + std::string(words[2]) + "'");
+    property.type = type_of(words[3]);
+    property.name = std::string(words[4]);
+  } else {
+    if (words.size() != 3) fail_here("expected 'property TYPE NAME'");
+    property.type = type_of(words[1]);
+    property.name = std::string(words[2]);
+  }
+  for (const Property& p : element.properties)
+    if (p.name == property.name)
+      fail_here("element '" + element.name + "' has two properties named '" + property.name + "'");
+  return property;
+}
+
 Header read_header(std::istream& in, const std::string& path) {
   Header header;
   std::string line;
@@ -171,19 +228,8 @@ Header read_header(std::istream& in, const std::string& path) {
       break;
     }
     if (key == "format") {
-      if (words.size() != 3) fail_here("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
       if (have_format) fail_here("a second 'format' line");
-      if (words[1] == "ascii") {
-        header.encoding = Encoding::ascii;
-      } else if (words[1] == "binary_little_endian") {
-        header.encoding = Encoding::binary_little_endian;
-      } else if (words[1] == "binary_big_endian") {
-        header.encoding = Encoding::binary_big_endian;
-      } else {
-        fail_here("unknown format '" + std::string(words[1]) +
-                  "' (expected ascii, binary_little_endian or binary_big_endian)");
-      }
-      if (words[2] != "1.0") fail_here("unsupported PLY version '" + std::string(words[2]) + "' (expected 1.0)");
+      header.encoding = format_line(words, fail_here);
       have_format = true;
     } else if (key == "comment") {
       const int dimension =
@@ -194,44 +240,10 @@ Header read_header(std::istream& in, const std::string& path) {
     } else if (key == "obj_info") {
       // Free text, like a comment.
     } else if (key == "element") {
-      if (words.size() != 3) fail_here("expected 'element NAME COUNT'");
-      Element element;
-      element.name = std::string(words[1]);
-      const std::optional<std::int64_t> count = parse_integer(words[2]);
-      if (count && *count < 0)
-        fail_here("element '" + element.name + "' has a negative count (" + std::string(words[2]) + ")");
-      if (!count)
-        fail_here("element '" + element.name + "' count '" + std::string(words[2]) + "' is not a valid number");
-      element.count = static_cast<std::uint64_t>(*count);
-      for (const Element& e : header.elements)
-        if (e.name == element.name) fail_here("a second element named '" + element.name + "'");
-      header.elements.push_back(std::move(element));
+      header.elements.push_back(element_line(words, header, fail_here));
     } else if (key == "property") {
       if (header.elements.empty()) fail_here("'property' before any 'element'");
-      Property property;
-      auto type_of = [&](std::string_view name) {
-        const std::optional<ScalarType> type = scalar_type(name);
-        if (!type) fail_here("unknown property type '" + std::string(name) + "'");
-        return *type;
-      };
-      if (words.size() >= 2 && words[1] == "list") {
-        if (words.size() != 5) fail_here("expected 'property list COUNT_TYPE ITEM_TYPE NAME'");
-        property.is_list = true;
-        property.count_type = type_of(words[2]);
-        if (!is_integer(property.count_type))
-          fail_here("a list's length type must be an integer type, not '" + std::string(words[2]) + "'");
-        property.type = type_of(words[3]);
-        property.name = std::string(words[4]);
-      } else {
-        if (words.size() != 3) fail_here("expected 'property TYPE NAME'");
-        property.type = type_of(words[1]);
-        property.name = std::string(words[2]);
-      }
-      Element& element = header.elements.back();
-      for (const Property& p : element.properties)
-        if (p.name == property.name)
-          fail_here("element '" + element.name + "' has two properties named '" + property.name + "'");
-      element.properties.push_back(std::move(property));
+      header.elements.back().properties.push_back(property_line(words, header.elements.back(), fail_here));
     } else {
       fail_here("unknown header keyword '" + std::string(key) + "'");
     }
