@@ -46,22 +46,10 @@ InputPositions input_positions(const std::string& path, int dimension) {
   return {loaded.dimension, std::move(loaded.points.positions)};
 }
 
-template <int D>
-std::vector<Vec<D>> in_dimension(const std::vector<Vec<3>>& positions) {
-  if constexpr (D == 3) {
-    return positions;
-  } else {
-    std::vector<Vec<D>> out;
-    out.reserve(positions.size());
-    for (const Vec<3>& p : positions) out.emplace_back(p[0], p[1]);
-    return out;
-  }
-}
-
 // Chooses h, says why, and refuses an input whose resampling at h would be too large.
 template <int D>
 double spacing_for(const std::vector<Vec<3>>& positions3, const ResampleOptions& options) {
-  const std::vector<Vec<D>> positions = in_dimension<D>(positions3);
+  const std::vector<Vec<D>> positions = from_3d<D>(positions3);
   SpacingChoice choice;
   try {
     choice = choose_spacing(positions, options.resampling);
