@@ -132,7 +132,11 @@ class Editor:
         except subprocess.TimeoutExpired:
             self.process.kill()
             fail("the editor did not quit on Ctrl+Q")
-        check(self.process.returncode == 0, "the editor quits cleanly on Ctrl+Q")
+        if self.process.returncode != 0:
+            output = self.process.stdout.read().decode(errors="replace")
+            fail("the editor quits cleanly on Ctrl+Q (exit status %d; its last output:\n%s)" %
+                 (self.process.returncode, output[-4000:]))
+        check(True, "the editor quits cleanly on Ctrl+Q")
 
 
 def read_ply(path):
@@ -311,9 +315,10 @@ def test_frames_during_heavy_step(binary, folder):
     gaps = [b - a for a, b in zip(times, times[1:])]
     print("busy for %.2f s over %d frames, longest gap %.3f s" % (busy, len(times), max(gaps, default=0.0)))
     # A UI that waited for the worker would show one gap as long as the whole step. Frames are slow here
-    # (software GL on cores shared with the worker and other jobs), so the bound is loose.
+    # (software GL on cores shared with the worker and other jobs, several times slower under the
+    # sanitizers), so the bound is relative to the step: no gap may hold a third of it.
     check(busy > 0.6, "the 3D resample kept the worker busy for a while (%.2f s)" % busy)
-    check(len(times) >= 5 and max(gaps) < min(2.0, busy / 2), "frames kept coming while the worker was busy")
+    check(len(times) >= 5 and max(gaps) < busy / 3, "frames kept coming while the worker was busy")
     editor.quit()
 
 
