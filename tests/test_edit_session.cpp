@@ -376,6 +376,35 @@ TEST_CASE("under local a session resamples where strained, keeps the strain thro
   CHECK(std::count(names.begin(), names.end(), "resampling") == 0);
 }
 
+TEST_CASE("under local a step stopped inside its phase leaves the session as before it, and runs the same after") {
+  EditSession<2> reference = circle_with_two_handles(2), session = circle_with_two_handles(2);
+  for (EditSession<2>* s : {&reference, &session}) s->set_resampling(true, ResamplePolicy::parse("local"));
+  std::vector<Vec<2>> to = reference.handles();
+  to[1].x() = 1.15;
+  REQUIRE(reference.move_handles(to, kRunAll).stepped);
+  REQUIRE(session.move_handles(to, kRunAll).stepped);
+  to[1].x() = 1.3;
+  REQUIRE(reference.move_handles(to, kRunAll).stepped);
+  const PointSet<2> start = session.points();
+  std::atomic<int> polls{0};
+  int stop_at = 0;
+  const WorkControl control{[&] { return ++polls >= stop_at; }, {}};
+  EditResult result;
+  int stops = 0;
+  for (stop_at = 1;; ++stop_at) {
+    polls = 0;
+    result = session.move_handles(to, control);
+    if (!result.cancelled) break;
+    ++stops;
+    CHECK(session.points().positions == start.positions);
+    CHECK(session.recording().steps().size() == 1);
+  }
+  CHECK(stops > 1);  // one poll comes before the phase: the others were inside it
+  CHECK(result.stepped);
+  CHECK(session.points().positions == reference.points().positions);
+  CHECK(session.recording().exact());
+}
+
 TEST_CASE("a 3D session replays exactly too") {
   EditSession<3> session(make_sphere(1.0, 2000, 0.08), 1);
   session.add_handle(Vec<3>(0.0, 0.0, 1.0));
