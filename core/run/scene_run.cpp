@@ -121,7 +121,7 @@ class SceneRunner {
     report_.points_initial = report_.points_min = report_.points_max = shape.points.size();
     const AmlsParameters parameters{scene_.radius_factor};
     if (options_.resample && options_.policy.kind == ResamplePolicy::Kind::local) {
-      local_.emplace(grid, parameters, scene_.variant, options_.threads);
+      local_.emplace(grid, parameters, scene_.variant, options_.threads, options_.local);
       local_->set_points(std::move(shape.points));
       return;
     }

@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "core/resample/local_resampling.hpp"
 #include "core/run/deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
 #include "core/resample/resample_policy.hpp"
@@ -48,6 +49,7 @@ namespace amls {
 struct SceneRunOptions {
   bool resample = true;  // false: deform the initial points only (`--no-resample`)
   ResamplePolicy policy;  // when resampling, which steps resample
+  LocalResampleOptions local;  // under `local`
   int threads = 1;
   double tracers_per_point = 50.0;
   std::size_t max_steps = 0;  // stop after this many steps (0: the whole history)
