@@ -2,7 +2,8 @@
 """local_resample_test.py AMLS SCENE WORK_DIR: `--resample local`, end to end.
 
 - The single vortex at 128^2 under `local` runs all 800 steps, ends closed,
-  resamples somewhere on some steps only, and its L1 error is within 25 % of
+  resamples somewhere on some steps only, reports its strain limit (0.05), and
+  its L1 error is within 25 % of
   the default policy's (measured: docs/local-resampling.md).
 - A short `amls deform SCENE --resample local` reports the policy and stays
   as close to the exact deformed shape as under `always`.
@@ -41,6 +42,8 @@ def main():
     always, local = report(always_path), report(local_path)
     if local["resample"] != "local" or local["status"] != "ok" or local["steps"] != 800:
         fail(f"vortex under local: policy {local['resample']}, status {local['status']}, {local['steps']} steps")
+    if local["strain_limit"] != 0.05:
+        fail(f"vortex under local: strain_limit {local['strain_limit']} in the report, expected 0.05")
     if not 0 < local["resamples"] < 800:
         fail(f"vortex under local resampled on {local['resamples']} of 800 steps: expected some, not all")
     ratio = local["l1_error"] / always["l1_error"]
