@@ -22,7 +22,8 @@ class Scaling final : public Deformation<D> {
  public:
   explicit Scaling(double rate) : rate_(rate) {}
   void deform(PointSet<D>& points, double t0, double t1, ThreadPool&) const override {
-    for (Vec<D>& p : points.positions) p = Vec<D>::Constant(0.5) + (1.0 + rate_ * (t1 - t0)) * (p - Vec<D>::Constant(0.5));
+    for (Vec<D>& p : points.positions)
+      p = Vec<D>::Constant(0.5) + (1.0 + rate_ * (t1 - t0)) * (p - Vec<D>::Constant(0.5));
   }
 
  private:

@@ -52,7 +52,8 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
                                    const std::vector<Vec<D>>& positions, double spacing, std::vector<float>& strain,
                                    ThreadPool& pool) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
-    throw std::invalid_argument("strain lattice: the spacing must be a positive number, got " + std::to_string(spacing));
+    throw std::invalid_argument("strain lattice: the spacing must be a positive number, got " +
+                                std::to_string(spacing));
   const std::size_t n = positions.size();
   strain.resize(n, 0.0F);
   StrainLatticeStats stats;
@@ -119,8 +120,8 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
     for (std::size_t k = begin; k < end; ++k) {
       std::array<Vec<D>, 1 << D> images;
       for (int v = 0; v < (1 << D); ++v)
-        images[static_cast<std::size_t>(v)] = nodes.positions[static_cast<std::size_t>(
-            node_slot[index_in<D>(used_cells[k] + corner<D>(v), node_size)])];
+        images[static_cast<std::size_t>(v)] =
+            nodes.positions[static_cast<std::size_t>(node_slot[index_in<D>(used_cells[k] + corner<D>(v), node_size)])];
       cell_strain[index_in<D>(used_cells[k], cells)] = cube_strain<D>(images, spacing);
     }
   });

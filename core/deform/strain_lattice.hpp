@@ -42,12 +42,10 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
 template <int D>
 float cube_strain(const std::array<Vec<D>, 1 << D>& images, double spacing);
 
-extern template StrainLatticeStats add_step_strain<2>(const Deformation<2>&, double, double,
-                                                      const std::vector<Vec<2>>&, double, std::vector<float>&,
-                                                      ThreadPool&);
-extern template StrainLatticeStats add_step_strain<3>(const Deformation<3>&, double, double,
-                                                      const std::vector<Vec<3>>&, double, std::vector<float>&,
-                                                      ThreadPool&);
+extern template StrainLatticeStats add_step_strain<2>(const Deformation<2>&, double, double, const std::vector<Vec<2>>&,
+                                                      double, std::vector<float>&, ThreadPool&);
+extern template StrainLatticeStats add_step_strain<3>(const Deformation<3>&, double, double, const std::vector<Vec<3>>&,
+                                                      double, std::vector<float>&, ThreadPool&);
 extern template float cube_strain<2>(const std::array<Vec<2>, 4>&, double);
 extern template float cube_strain<3>(const std::array<Vec<3>, 8>&, double);
 
