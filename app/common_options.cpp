@@ -70,7 +70,8 @@ CLI::Option* add_resample_option(CLI::App& cmd, std::string& policy) {
       .add_option("--resample", policy,
                   "when to resample: always (after every step, as the paper), auto (when a point is not surrounded "
                   "by neighbours of its sheet within 2.5 h, or normals turn faster than on a circle of radius "
-                  "1.4 h) or every:K (steps 0, K, 2K, ...)")
+                  "1.4 h), every:K (steps 0, K, 2K, ...) or local (after every step, only where the deformation "
+                  "strained the sampling: docs/local-resampling.md)")
       ->capture_default_str();
 }
 

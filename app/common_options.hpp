@@ -23,7 +23,7 @@ void add_radius_factor_option(CLI::App& cmd, double& radius_factor);
 // --threads: --radius-factor, --min-weight, --dt, --substeps and the ray
 // tracer's --ray-samples and --cluster-threshold.
 void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config);
-// --resample always|auto|every:K (core/resample/resample_policy.hpp); the command
+// --resample always|auto|every:K|local (core/resample/resample_policy.hpp); the command
 // parses it with ResamplePolicy::parse before its work, whose message names
 // the option. Returns the option, for excludes().
 CLI::Option* add_resample_option(CLI::App& cmd, std::string& policy);

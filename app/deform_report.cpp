@@ -91,6 +91,7 @@ nlohmann::json to_json(const SceneRunReport& r) {
 
 void print_summary(std::ostream& out, const SceneRunReport& r) {
   char line[256];
+  const bool local = r.resample && r.policy.kind == ResamplePolicy::Kind::local;
   const std::string resampling =
       r.resample ? "resample " + r.policy.to_string() + ": " + std::to_string(r.resamples) + " resamples"
                  : std::string("without resampling");
@@ -101,7 +102,7 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
   out << line;
   std::snprintf(line, sizeof line, "points: initial %zu, final %zu (min %zu, max %zu); spacing/h over %zu %sframes: min %.3f median %.3f max %.3f\n",
                 r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured,
-                r.resample ? "resampled " : "", r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
+                r.resample && !local ? "resampled " : "", r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
   out << line;
   std::snprintf(line, sizeof line, "spacing outside [%g h, %g h]: %zu below, %zu above, of %zu measured (%.3f %%)\n",
                 kSpacingBandLow, kSpacingBandHigh, r.spacing_below, r.spacing_above, r.spacing_points,

@@ -27,6 +27,7 @@ nlohmann::json to_json(const FlowTestReport& r) {
   j["steps"] = r.steps;
   j["steps_planned"] = r.steps_planned;
   j["resample"] = r.config.resample.to_string();
+  if (r.config.resample.kind == ResamplePolicy::Kind::local) j["strain_limit"] = r.config.strain_limit;
   j["resamples"] = r.resamples;
   j["quality_seconds"] = r.quality_seconds;
   j["threads"] = r.config.threads;

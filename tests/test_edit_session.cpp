@@ -334,6 +334,77 @@ TEST_CASE("under auto a session resamples only where the sampling asks, and repl
   CHECK(replayed.normals == session.points().normals);
 }
 
+TEST_CASE("under local a session resamples where strained, keeps the strain through undo, and replays exactly") {
+  EditSession<2> session = circle_with_two_handles();
+  session.set_resampling(true, ResamplePolicy::parse("local"));
+  std::vector<std::string> names;
+  const WorkControl control{{}, [&](const char* name, int, int) { names.push_back(name); }};
+  std::size_t resamples = 0;
+  session.begin_drag();
+  std::vector<Vec<2>> to = session.handles();
+  for (int k = 1; k <= 12; ++k) {
+    to[1].x() = 1.0 + 0.15 * k;  // 6 h a step: the right half stretches, the left barely moves
+    const EditResult result = session.move_handles(to, control);
+    REQUIRE(result.stepped);
+    resamples += result.resamples;
+  }
+  // The loaded points are resampled whole once; then each step is one phase.
+  CHECK(names.at(0) == "resampling");
+  CHECK(std::count(names.begin(), names.end(), "resampling") == 1);
+  CHECK(std::count(names.begin(), names.end(), "deforming, resampling where strained") == 12);
+  CHECK(resamples >= 2);  // the start, and steps that strained the sampling somewhere
+  const SessionRecording<2>& recording = session.recording();
+  REQUIRE(recording.exact());
+  CHECK(recording.replay_arguments() == "--resample local");
+  // The session's surface keeps its points in its index's order; the set is the replay's.
+  auto sorted = [](std::vector<Vec<2>> v) {
+    std::sort(v.begin(), v.end(), [](const Vec<2>& a, const Vec<2>& b) {
+      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+    });
+    return v;
+  };
+  const PointSet<2> replayed = amls::test::replay_with_amls_deform(recording);
+  CHECK(sorted(replayed.positions) == sorted(session.points().positions));
+  // An undo restores the points with their strain: the next step runs locally, without a whole resample.
+  const PointSet<2> after = session.points();
+  REQUIRE(session.undo());
+  REQUIRE(session.redo());
+  CHECK(sorted(session.points().positions) == sorted(after.positions));
+  names.clear();
+  to[1].x() += 0.15;
+  REQUIRE(session.move_handles(to, control).stepped);
+  CHECK(std::count(names.begin(), names.end(), "resampling") == 0);
+}
+
+TEST_CASE("under local a step stopped inside its phase leaves the session as before it, and runs the same after") {
+  EditSession<2> reference = circle_with_two_handles(2), session = circle_with_two_handles(2);
+  for (EditSession<2>* s : {&reference, &session}) s->set_resampling(true, ResamplePolicy::parse("local"));
+  std::vector<Vec<2>> to = reference.handles();
+  to[1].x() = 1.15;
+  REQUIRE(reference.move_handles(to, kRunAll).stepped);
+  REQUIRE(session.move_handles(to, kRunAll).stepped);
+  to[1].x() = 1.3;
+  REQUIRE(reference.move_handles(to, kRunAll).stepped);
+  const PointSet<2> start = session.points();
+  std::atomic<int> polls{0};
+  int stop_at = 0;
+  const WorkControl control{[&] { return ++polls >= stop_at; }, {}};
+  EditResult result;
+  int stops = 0;
+  for (stop_at = 1;; ++stop_at) {
+    polls = 0;
+    result = session.move_handles(to, control);
+    if (!result.cancelled) break;
+    ++stops;
+    CHECK(session.points().positions == start.positions);
+    CHECK(session.recording().steps().size() == 1);
+  }
+  CHECK(stops > 1);  // one poll comes before the phase: the others were inside it
+  CHECK(result.stepped);
+  CHECK(session.points().positions == reference.points().positions);
+  CHECK(session.recording().exact());
+}
+
 TEST_CASE("a 3D session replays exactly too") {
   EditSession<3> session(make_sphere(1.0, 2000, 0.08), 1);
   session.add_handle(Vec<3>(0.0, 0.0, 1.0));

@@ -51,8 +51,10 @@ TEST_CASE("resample policies parse, print, and reject bad forms with a message")
   CHECK(every.kind == ResamplePolicy::Kind::every);
   CHECK(every.every == 5);
   CHECK(every.to_string() == "every:5");
+  CHECK(ResamplePolicy::parse("local").kind == ResamplePolicy::Kind::local);
+  CHECK(ResamplePolicy::parse("local").to_string() == "local");
   for (const char* bad : {"sometimes", "every:", "every:0", "every:3x", "every:-2"})
-    CHECK_THROWS_WITH_AS(ResamplePolicy::parse(bad), doctest::Contains("always, auto or every:K"),
+    CHECK_THROWS_WITH_AS(ResamplePolicy::parse(bad), doctest::Contains("always, auto, local or every:K"),
                          std::invalid_argument);
 }
 

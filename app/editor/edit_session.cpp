@@ -72,7 +72,7 @@ class Phases {
 template <int D>
 EditSession<D>::EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes)
     : threads_(threads),
-      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), shape.settings, false,
+      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), shape.settings, {}, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
       recording_(initial_.recording),
@@ -93,7 +93,9 @@ std::unique_ptr<DeformingSurface<D>> EditSession<D>::make_surface(const SurfaceS
 
 template <int D>
 typename EditSession<D>::State EditSession<D>::current_state() const {
-  return State{surface_->points(), handles_, settings_, settled_, recording_};
+  // The local loop's points in its own order, which its strain follows.
+  if (local_in_sync()) return State{local_->points(), handles_, settings_, local_->strain(), settled_, recording_};
+  return State{surface_->points(), handles_, settings_, {}, settled_, recording_};
 }
 
 template <int D>
@@ -103,6 +105,7 @@ void EditSession<D>::restore(const State& state) {
   next.radius_factor = state.settings.radius_factor;
   next.variant = state.settings.variant;
   if (!next.same_grid(settings_) || !surface_) surface_ = make_surface(next);
+  if (!next.same_grid(settings_) || next.variant != settings_.variant) local_.reset();
   surface_->set_variant(next.variant);
   surface_->set_points(state.points);
   settings_ = next;
@@ -110,12 +113,17 @@ void EditSession<D>::restore(const State& state) {
   settled_ = state.settled;
   recording_ = state.recording;
   ++version_;
+  if (local_ && !state.strain.empty()) {
+    local_->set_points(state.points, state.strain);
+    local_version_ = version_;
+  }
 }
 
 template <int D>
 std::size_t EditSession<D>::State::bytes() const {
-  std::size_t total =
-      sizeof(State) + (points.positions.size() + points.normals.size() + handles.size()) * sizeof(Vec<D>);
+  std::size_t total = sizeof(State) +
+                      (points.positions.size() + points.normals.size() + handles.size()) * sizeof(Vec<D>) +
+                      strain.size() * sizeof(float);
   for (const RecordedStep<D>& step : recording.steps())
     total += sizeof(step) + (step.from.size() + step.to.size()) * sizeof(Vec<D>);
   return total;
@@ -209,6 +217,8 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
     result.changed = true;
     return result;
   }
+  if (settings_.resample && settings_.policy.kind == ResamplePolicy::Kind::local)
+    return move_handles_locally(deformation, std::move(to), control);
   // As `amls deform`, where the policy decides before step k whether to
   // resample and once more after the last step: here the decision for the
   // points a step made is taken right after it (the step that follows, if
@@ -260,6 +270,61 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
 }
 
 template <int D>
+EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
+                                                const WorkControl& control) {
+  // As `amls deform --resample local`: the points are resampled whole once
+  // (the loaded shape, or points whose strain the loop does not know: after
+  // resampling was off, or another policy), then each step maps them and
+  // resamples where strained.
+  if (!local_)
+    local_ = std::make_unique<LocalDeformingSurface<D>>(surface_->grid(), AmlsParameters{settings_.radius_factor},
+                                                        settings_.variant, threads_);
+  const bool start = !local_in_sync();
+  EditResult result;
+  Phases phases(control, start ? 2 : 1);
+  PointSet<D> before = surface_->points();
+  // A stopped step leaves the local loop as it was, with its strain: the next step runs as if it never had.
+  PointSet<D> local_before = start ? PointSet<D>{} : local_->points();
+  std::vector<float> strain_before = start ? std::vector<float>{} : local_->strain();
+  const bool finished = phases.run(local_->pool(), [&] {
+    if (start) {
+      if (!phases.next(kResamplingPhase)) return false;
+      // Untouched points go in as loaded, as `amls deform` hands them over (see set_grid).
+      local_->set_points(recording_.untouched() ? initial_.points : surface_->points());
+      const LocalStepStats all = local_->resample_all();
+      add_stats(result, StepStats{all.timings, all.resample.normals, all.resample.resample, all.points_before,
+                                  all.points_after});
+      ++result.resamples;
+    }
+    if (!phases.next("deforming, resampling where strained")) return false;
+    const LocalStepStats step = local_->step(deformation);
+    add_stats(result, StepStats{step.timings, step.resample.normals, step.resample.resample, step.points_before,
+                                step.points_after});
+    if (step.resample.flagged_cells > 0) ++result.resamples;
+    return true;
+  });
+  if (!finished) {
+    if (phases.started()) roll_back(std::move(before));
+    if (start)
+      local_version_ = ~std::uint64_t{0};  // not begun: the next step starts from the surface's points
+    else
+      local_->set_points(std::move(local_before), std::move(strain_before));
+    result = EditResult{};
+    result.cancelled = true;
+    return result;
+  }
+  if (start) recording_.resampled(settings_);
+  recording_.deformed(handles_, to, settings_);
+  surface_->set_points(local_->points());
+  handles_ = std::move(to);
+  settled_ = true;
+  ++version_;
+  local_version_ = version_;
+  result.changed = result.stepped = true;
+  return result;
+}
+
+template <int D>
 EditResult EditSession<D>::resample_now(const WorkControl& control) {
   EditResult result;
   result.changed = true;
@@ -289,6 +354,7 @@ EditResult EditSession<D>::set_variant(Variant variant, const WorkControl& contr
   push_undo();
   settings_.variant = variant;
   surface_->set_variant(variant);
+  local_.reset();
   return resample_now(control);
 }
 
@@ -311,6 +377,7 @@ EditResult EditSession<D>::set_grid(double spacing, double radius_factor, const 
   // order of the fits' sums changes the last bits of the resample.
   surface->set_points(recording_.untouched() ? initial_.points : surface_->points());
   surface_ = std::move(surface);
+  local_.reset();
   settings_ = next;
   ++version_;
   return resample_now(control);

@@ -8,6 +8,11 @@
 // resample if the resample policy asks for one - the same calls, in the same
 // order, with the same decisions, as `amls deform`, so that a saved session
 // replays exactly (session_recording.hpp).
+//
+// Under the `local` policy a LocalDeformingSurface carries the points and
+// their strain from step to step (core/run/local_deforming_surface.hpp): each
+// step maps them and resamples only where strained; the DeformingSurface then
+// holds a copy, for drawing, picking and evaluation.
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -16,6 +21,7 @@
 
 #include "app/editor/session_recording.hpp"
 #include "core/run/deforming_surface.hpp"
+#include "core/run/local_deforming_surface.hpp"
 
 namespace amls::editor {
 
@@ -101,6 +107,7 @@ class EditSession {
     PointSet<D> points;
     std::vector<Vec<D>> handles;
     SurfaceSettings settings;  // only h, Delta / h and the variant are restored
+    std::vector<float> strain;  // under `local`, each point's (empty otherwise)
     bool settled = false;
     SessionRecording<D> recording;
     // What the state holds in memory, about: its points, handles and recorded steps.
@@ -120,10 +127,17 @@ class EditSession {
   // After a stopped edit: the surface holds `before` again.
   void roll_back(PointSet<D> before);
   EditResult resample_now(const WorkControl& control);
+  // A handle move under the `local` policy.
+  EditResult move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
+                                  const WorkControl& control);
+  // Whether the local loop holds the current points (its strain is theirs).
+  bool local_in_sync() const { return local_ && local_version_ == version_; }
 
   int threads_;
   State initial_;
   std::unique_ptr<DeformingSurface<D>> surface_;
+  std::unique_ptr<LocalDeformingSurface<D>> local_;  // made by the first step under `local`, for this grid and variant
+  std::uint64_t local_version_ = ~std::uint64_t{0};  // the version whose points local_ holds
   std::vector<Vec<D>> handles_;
   SurfaceSettings settings_;
   // The resample policy has had its say on the points: they are a resample's,

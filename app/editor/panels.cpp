@@ -91,16 +91,17 @@ void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& ac
 }
 
 // Resampling on or off, and when: after every step, when the sampling
-// quality leaves its band (auto), or every K-th step. One combo, so that "off"
-// cannot be combined with a policy it ignores.
+// quality leaves its band (auto), every K-th step, or after every step only
+// where strained (local). One combo, so that "off" cannot be combined with a
+// policy it ignores.
 void resampling_switch(UiState& ui, const PanelActions& actions) {
   ResamplePolicy& policy = ui.edit.policy;
   // The combo's entries in the order of ResamplePolicy::Kind, then off.
-  static const char* kWhen[] = {"always", "auto", "every K steps", "off"};
-  constexpr int kOff = 3;
+  static const char* kWhen[] = {"always", "auto", "every K steps", "local", "off"};
+  constexpr int kOff = 4;
   int when = ui.edit.resample ? static_cast<int>(policy.kind) : kOff;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-  bool changed = ImGui::Combo("resample", &when, kWhen, 4);
+  bool changed = ImGui::Combo("resample", &when, kWhen, kOff + 1);
   ui.edit.resample = when != kOff;
   if (ui.edit.resample) policy.kind = static_cast<ResamplePolicy::Kind>(when);
   if (ui.edit.resample && policy.kind == ResamplePolicy::Kind::every) {
@@ -115,6 +116,8 @@ void resampling_switch(UiState& ui, const PanelActions& actions) {
     ImGui::TextColored(kWarning, "off: the points spread and S(P) breaks");
   else if (policy.kind == ResamplePolicy::Kind::automatic)
     ImGui::TextColored(kDim, "when a gap exceeds 2.5 h or a feature is sharper than 1.4 h");
+  else if (policy.kind == ResamplePolicy::Kind::local)
+    ImGui::TextColored(kDim, "only where a step strained the sampling");
 }
 
 void surface_section(UiState& ui, const PanelActions& actions) {

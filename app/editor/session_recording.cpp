@@ -40,6 +40,9 @@ void SessionRecording<D>::resampled(const SurfaceSettings& settings) {
   if (last_ == Op::resample)
     spoil("the surface was resampled twice in a row (the variant or the grid changed without a step between)");
   if (mode_ == Mode::no_resample) spoil("resampling was switched on after steps without it");
+  if (!steps_.empty() && settings.resample && settings.policy.kind == ResamplePolicy::Kind::local)
+    spoil("under local, the whole surface was resampled after the first step (an undo, or resampling switched off "
+          "and on)");
   if (steps_.empty()) {
     settings_.spacing = settings.spacing;
     settings_.radius_factor = settings.radius_factor;

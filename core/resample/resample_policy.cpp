@@ -209,6 +209,10 @@ ResamplePolicy ResamplePolicy::parse(const std::string& text) {
     p.kind = Kind::automatic;
     return p;
   }
+  if (text == "local") {
+    p.kind = Kind::local;
+    return p;
+  }
   const std::string prefix = "every:";
   if (text.rfind(prefix, 0) == 0) {
     std::size_t used = 0;
@@ -224,7 +228,7 @@ ResamplePolicy ResamplePolicy::parse(const std::string& text) {
       return p;
     }
   }
-  throw std::invalid_argument("--resample must be always, auto or every:K with K >= 1, got '" + text + "'");
+  throw std::invalid_argument("--resample must be always, auto, local or every:K with K >= 1, got '" + text + "'");
 }
 
 std::string ResamplePolicy::to_string() const {
@@ -232,6 +236,7 @@ std::string ResamplePolicy::to_string() const {
     case Kind::always: return "always";
     case Kind::automatic: return "auto";
     case Kind::every: return "every:" + std::to_string(every);
+    case Kind::local: return "local";
   }
   return "always";
 }
@@ -241,7 +246,8 @@ double ResamplePolicy::search_radius() const { return std::max(max_gap, std::sqr
 template <int D>
 bool ResamplePolicy::resample_now(std::size_t step, const PointSet<D>& points, double h, ThreadPool& pool) const {
   switch (kind) {
-    case Kind::always: return true;
+    case Kind::always:
+    case Kind::local: return true;
     case Kind::every: return step % static_cast<std::size_t>(every) == 0;
     case Kind::automatic: {
       if (step == 0 || points.size() < 2) return true;

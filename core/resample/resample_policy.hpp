@@ -64,15 +64,19 @@ struct SamplingQuality {
 template <int D>
 SamplingQuality sampling_quality(const PointSet<D>& points, double h, double radius, ThreadPool& pool);
 
+// `local` resamples, after each deformation, only where the deformation has
+// strained the sampling since it was made (core/run/local_deforming_surface.hpp,
+// docs/local-resampling.md): a loop of its own, so resample_now() does not
+// decide it (it says true: the step resamples where strained).
 struct ResamplePolicy {
-  enum class Kind { always, automatic, every };
+  enum class Kind { always, automatic, every, local };
   Kind kind = Kind::always;
   int every = 1;  // Kind::every: resample on steps 0, K, 2K, ...
   // Kind::automatic: the band (units of h), explained above.
   double max_gap = 2.5;
   double min_feature_size = 1.4;
 
-  // "always", "auto" or "every:K"; throws std::invalid_argument naming the accepted forms.
+  // "always", "auto", "every:K" or "local"; throws std::invalid_argument naming the accepted forms.
   static ResamplePolicy parse(const std::string& text);
   std::string to_string() const;
   bool operator==(const ResamplePolicy&) const = default;

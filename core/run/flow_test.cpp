@@ -8,6 +8,7 @@
 #include "core/deform/flow_deformation.hpp"
 #include "core/util/process_memory.hpp"
 #include "core/run/growth_limit.hpp"
+#include "core/run/local_deforming_surface.hpp"
 #include "core/run/ray_tracing_surface.hpp"
 #include "core/run/settle.hpp"
 #include "core/geometry/shapes.hpp"
@@ -27,6 +28,9 @@ void validate(const FlowTestConfig& c) {
   check_range("--threads", c.threads, ranges::kThreads);
   check_range("--ray-samples", c.ray.samples_per_cell, ranges::kRaySamples);
   check_range("--cluster-threshold", c.ray.cluster_threshold, ranges::kClusterThreshold);
+  if (c.resample.kind == ResamplePolicy::Kind::local && c.variant == FlowVariant::raytrace)
+    throw std::invalid_argument(
+        "--resample local needs --variant exact or interpolated: the ray-tracing baseline has no local resample");
 }
 
 // The points a test starts from, checked before they are made: `count` is
@@ -55,7 +59,40 @@ void add_work(FlowTestReport& report, const RayStepStats& stats) {
   report.failed_normal_fits += stats.normals.failed();
 }
 
-// Runs a loop (DeformingSurface or RayTracingSurface) from t = 0 to `period`,
+void add_work(FlowTestReport& report, const LocalStepStats& stats) {
+  report.vertex_evaluations += stats.resample.resample.vertices;
+  report.crossings += stats.resample.resample.crossings;
+  report.root_evaluations += stats.resample.resample.root_evaluations;
+  report.failed_normal_fits += stats.resample.normals.failed();
+}
+
+// Whether a step that the policy let resample did: a local step only where strained.
+bool resampled(const StepStats&) { return true; }
+bool resampled(const RayStepStats&) { return true; }
+bool resampled(const LocalStepStats& stats) { return stats.resample.flagged_cells > 0; }
+
+// The local loop as run_flow drives a loop: each step deforms, then resamples where strained.
+template <int D>
+class LocalFlowLoop {
+ public:
+  LocalFlowLoop(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant, int threads,
+                double strain_limit)
+      : surface_(grid, parameters, variant, threads, LocalResampleOptions{strain_limit}) {}
+  void set_points(PointSet<D> points) { surface_.set_points(std::move(points)); }
+  LocalStepStats resample_only() { return surface_.resample_all(); }
+  LocalStepStats step(const Deformation<D>& deformation, double t0, double t1, bool) {
+    return surface_.step(deformation, t0, t1);
+  }
+  const PointSet<D>& points() const { return surface_.points(); }
+  const Grid<D>& grid() const { return surface_.grid(); }
+  ThreadPool& pool() { return surface_.pool(); }
+  AmlsSurface<D> fitted_surface() { return surface_.fitted_surface(); }
+
+ private:
+  LocalDeformingSurface<D> surface_;
+};
+
+// Runs a loop (DeformingSurface, RayTracingSurface or LocalFlowLoop) from t = 0 to `period`,
 // starting from one resampling of the exact shape.
 template <int D, typename Loop>
 void run_flow(Loop& loop, std::shared_ptr<const VelocityField<D>> field, double period, const FlowTestConfig& config,
@@ -71,7 +108,7 @@ void run_flow(Loop& loop, std::shared_ptr<const VelocityField<D>> field, double 
     // The paper's loop resamples within the step, before deforming.
     const bool resample = policy_resamples(config.resample, k, loop, report.quality_seconds);
     const auto stats = loop.step(flow, t0, t1, resample);
-    report.resamples += resample ? 1 : 0;
+    report.resamples += resample && resampled(stats) ? 1 : 0;
     timings += stats.timings;
     report.points_processed += stats.points_before;
     add_work(report, stats);
@@ -139,6 +176,12 @@ FlowTestRun<D> run_flow_test(const char* test, const FlowTestConfig& config, std
     loop.set_points(sample(0.5 * grid.spacing()));
     run_flow<D>(loop, std::move(field), period, config, progress, report);
     return finish<D>(report, loop.amls_surface(), measure);
+  }
+  if (config.resample.kind == ResamplePolicy::Kind::local) {
+    LocalFlowLoop<D> loop(grid, parameters, grid_variant(config.variant), config.threads, config.strain_limit);
+    loop.set_points(sample(0.5 * grid.spacing()));
+    run_flow<D>(loop, std::move(field), period, config, progress, report);
+    return finish<D>(report, loop.fitted_surface(), measure);
   }
   DeformingSurface<D> loop(grid, parameters, grid_variant(config.variant), config.threads);
   loop.set_points(sample(0.5 * grid.spacing()));

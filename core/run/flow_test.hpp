@@ -36,6 +36,10 @@ struct FlowTestConfig {
   int substeps = 1;
   int threads = 1;
   ResamplePolicy resample;
+  // --resample local: the summed strain above which a region is resampled
+  // (LocalResampleOptions::strain_limit; docs/local-resampling.md says why
+  // the flows need a lower one than a drag).
+  double strain_limit = 0.05;
 };
 
 struct FlowTestReport {
@@ -43,7 +47,7 @@ struct FlowTestReport {
   int dimension = 2;
   FlowTestConfig config;
   std::size_t steps = 0;  // steps done (fewer than planned if the run broke)
-  std::size_t resamples = 0;  // steps that resampled (all of them under --resample always)
+  std::size_t resamples = 0;  // steps that resampled (all of them under --resample always; under local, somewhere)
   std::size_t steps_planned = 0;
   bool broken = false;
   std::string status_reason;

@@ -1,6 +1,8 @@
 #include "core/run/local_deforming_surface.hpp"
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "core/util/stopwatch.hpp"
 
@@ -20,6 +22,7 @@ template <int D>
 LocalDeformingSurface<D>::LocalDeformingSurface(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant,
                                                 int threads, const LocalResampleOptions& options)
     : grid_(grid),
+      parameters_(parameters),
       resampler_(grid, parameters, variant),
       lattice_{kLatticeSpacing * grid.spacing(), 0.0, 4, false},
       pool_(threads) {
@@ -30,6 +33,15 @@ template <int D>
 void LocalDeformingSurface<D>::set_points(PointSet<D> points) {
   points_ = std::move(points);
   strain_.assign(points_.size(), std::numeric_limits<float>::infinity());
+}
+
+template <int D>
+void LocalDeformingSurface<D>::set_points(PointSet<D> points, std::vector<float> strain) {
+  if (strain.size() != points.size())
+    throw std::invalid_argument("local deforming surface: " + std::to_string(points.size()) + " points but " +
+                                std::to_string(strain.size()) + " strains");
+  points_ = std::move(points);
+  strain_ = std::move(strain);
 }
 
 template <int D>
@@ -63,6 +75,30 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
   stats.map = map;
   stats.timings.deform = deform_seconds;
   return stats;
+}
+
+template <int D>
+LocalStepStats LocalDeformingSurface<D>::step(const Deformation<D>& deformation, double t0, double t1) {
+  Stopwatch clock;
+  const std::size_t before = points_.size();
+  const StrainLatticeStats lattice =
+      add_step_strain(deformation, t0, t1, points_.positions, lattice_.spacing, strain_, pool_);
+  deformation.deform(points_, t0, t1, pool_);
+  const double deform_seconds = clock.lap();
+  LocalStepStats stats = resample_strained();
+  stats.points_before = before;
+  stats.strain_lattice = lattice;
+  stats.timings.deform = deform_seconds;
+  return stats;
+}
+
+template <int D>
+AmlsSurface<D> LocalDeformingSurface<D>::fitted_surface() {
+  AmlsSurface<D> surface(grid_, parameters_);
+  surface.set_points(points_);
+  surface.hash_points(pool_);
+  surface.update_normals(pool_);
+  return surface;
 }
 
 template class LocalDeformingSurface<2>;

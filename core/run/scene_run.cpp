@@ -7,6 +7,7 @@
 
 #include "core/deform/mls_deformation.hpp"
 #include "core/run/growth_limit.hpp"
+#include "core/run/local_deforming_surface.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/run/settle.hpp"
 #include "core/surface/spacing_band.hpp"
@@ -70,7 +71,7 @@ class SceneRunner {
         probe_frame(k + 1, record);
         if (k + 1 == report_.steps_planned) report_.per_step.push_back(record);
       }
-      const std::size_t n = surface_->points().size();
+      const std::size_t n = points().size();
       if (progress_) progress_(k + 1, report_.steps_planned, n);
       if (grew_past_limit(n, report_.points_initial)) {
         mark_broken(k + 1, growth_breakdown(k + 1));
@@ -117,10 +118,19 @@ class SceneRunner {
 
     const Grid<D> grid = resampling_grid(shape.points, scene_.h(), scene_.radius_factor);
     report_.grid_origin.template head<D>() = grid.origin();
-    surface_.emplace(grid, AmlsParameters{scene_.radius_factor}, scene_.variant, options_.threads);
     report_.points_initial = report_.points_min = report_.points_max = shape.points.size();
+    const AmlsParameters parameters{scene_.radius_factor};
+    if (options_.resample && options_.policy.kind == ResamplePolicy::Kind::local) {
+      local_.emplace(grid, parameters, scene_.variant, options_.threads, options_.local);
+      local_->set_points(std::move(shape.points));
+      return;
+    }
+    surface_.emplace(grid, parameters, scene_.variant, options_.threads);
     surface_->set_points(std::move(shape.points));
   }
+
+  const PointSet<D>& points() const { return local_ ? local_->points() : surface_->points(); }
+  ThreadPool& pool() { return local_ ? local_->pool() : surface_->pool(); }
 
   std::vector<Vec<D>> probes() const {
     std::vector<Vec<D>> out;
@@ -133,7 +143,7 @@ class SceneRunner {
   // the resampler's points, not how far the deformation spread them since.
   void measure_frame(std::size_t step, SceneStepRecord& record) {
     Stopwatch clock;
-    const PointSet<D>& points = surface_->points();
+    const PointSet<D>& points = this->points();
     record.step = step;
     record.points = points.size();
     const std::vector<double> spacings = nearest_neighbour_spacings(points, report_.h);
@@ -142,7 +152,7 @@ class SceneRunner {
         std::lower_bound(spacings.begin(), spacings.end(), kSpacingBandLow) - spacings.begin());
     record.spacing_above =
         static_cast<std::size_t>(spacings.end() - std::upper_bound(spacings.begin(), spacings.end(), kSpacingBandHigh));
-    const bool counted = !options_.resample || record.resampled;
+    const bool counted = !options_.resample || record.resampled || local_.has_value();
     if (counted) {
       report_.spacing_points += spacings.size();
       report_.spacing_below += record.spacing_below;
@@ -164,6 +174,7 @@ class SceneRunner {
   // With resampling, before step `step` (and after the last): resamples S(P)
   // if the policy asks, and makes the frame. False if the resample is empty.
   bool settle_frame(std::size_t step, SceneStepRecord& record) {
+    if (local_) return local_frame(step, record);
     const Settling settled = *settle(*surface_, options_.policy, step);
     report_.quality_seconds += settled.quality_seconds;
     record.resampled = settled.resampled;
@@ -176,14 +187,40 @@ class SceneRunner {
     return !surface_->points().empty();
   }
 
-  // One step of the history: the points and the tracers deformed.
+  // Under `local`, the frame of `step`: step 0 resamples the whole surface,
+  // later frames are what the step before made (deformed, and resampled
+  // where strained).
+  bool local_frame(std::size_t step, SceneStepRecord& record) {
+    if (step == 0) {
+      const LocalStepStats stats = local_->resample_all();
+      record.timings = stats.timings;
+      local_resampled_ = true;
+      local_failed_fits_ = stats.resample.normals.failed();
+    }
+    record.resampled = local_resampled_;
+    record.failed_normal_fits = local_failed_fits_;
+    if (record.resampled) ++report_.resamples;
+    local_resampled_ = false;
+    local_failed_fits_ = 0;
+    measure_frame(step, record);
+    return !points().empty();
+  }
+
+  // One step of the history: the points and the tracers deformed (under
+  // `local`, the points resampled where strained too).
   void deform(const HistoryStep<D>& step) {
     const MlsDeformation<D> deformation(step.from, step.to, scene_.kind, scene_.alpha);
-    const StepStats stats = surface_->step(deformation, 0.0, 1.0, false);
-    report_.per_step.back().timings += stats.timings;
+    if (local_) {
+      const LocalStepStats stats = local_->step(deformation);
+      report_.per_step.back().timings += stats.timings;
+      local_resampled_ = stats.resample.flagged_cells > 0;
+      local_failed_fits_ = stats.resample.normals.failed();
+    } else {
+      report_.per_step.back().timings += surface_->step(deformation, 0.0, 1.0, false).timings;
+    }
     report_.timings += report_.per_step.back().timings;
     Stopwatch clock;
-    deformation.apply(tracers_, surface_->pool());
+    deformation.apply(tracers_, pool());
     report_.tracer_seconds += clock.lap();
     report_.affine_fallbacks += deformation.fallbacks();
   }
@@ -205,12 +242,16 @@ class SceneRunner {
 
   // The final surface against the exact shape, and the run's totals.
   void finish(const FrameSink<D>& exact) {
-    const PointSet<D>& points = surface_->points();
+    const PointSet<D>& points = this->points();
     report_.points_final = points.size();
     Stopwatch clock;
     if (!points.empty()) {
-      surface_->refresh_normals();
-      probe(surface_->surface(), probes(), report_.final_holes, report_.final_probe_max_h);
+      if (local_) {
+        probe(local_->fitted_surface(), probes(), report_.final_holes, report_.final_probe_max_h);
+      } else {
+        surface_->refresh_normals();
+        probe(surface_->surface(), probes(), report_.final_holes, report_.final_probe_max_h);
+      }
       report_.distance_to_exact_h = nearest_distance_stats(points.positions, tracers_.positions, report_.h);
       report_.exact_to_points_h = nearest_distance_stats(tracers_.positions, points.positions, report_.h);
     }
@@ -248,6 +289,10 @@ class SceneRunner {
   PointSet<D> tracers_;
   std::size_t probe_stride_ = 1;
   std::optional<DeformingSurface<D>> surface_;
+  std::optional<LocalDeformingSurface<D>> local_;  // instead of surface_, under `local`
+  // What the last local step did, for the next frame's record.
+  bool local_resampled_ = false;
+  std::size_t local_failed_fits_ = 0;
   std::vector<double> medians_;  // of the frames measured
 };
 

@@ -17,6 +17,11 @@
 // resample, the points the resampler made (a skipped step's frame is recorded
 // with its own spacing, but not counted in them).
 // Without resampling, frame k is P_k, the initial points deformed k times.
+// Under `local` (core/run/local_deforming_surface.hpp), step 0 resamples the
+// whole surface and each step k deforms the points, then resamples them where
+// the summed strain says the sampling changed: frame k + 1 is that point set,
+// and every frame counts in the spacing statistics (each is what the loop
+// carries on with; `resampled` says whether the step replaced any points).
 //
 // Breakdown (the paper's Fig. 2(b)): without resampling, the surface S(P) has
 // broken at step k when it no longer covers the exact shape: F is undefined (no
@@ -32,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "core/resample/local_resampling.hpp"
 #include "core/run/deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
 #include "core/resample/resample_policy.hpp"
@@ -43,6 +49,7 @@ namespace amls {
 struct SceneRunOptions {
   bool resample = true;  // false: deform the initial points only (`--no-resample`)
   ResamplePolicy policy;  // when resampling, which steps resample
+  LocalResampleOptions local;  // under `local`
   int threads = 1;
   double tracers_per_point = 50.0;
   std::size_t max_steps = 0;  // stop after this many steps (0: the whole history)
@@ -84,7 +91,7 @@ struct SceneRunReport {
   std::size_t stages = 0;
   std::size_t steps = 0;  // done
   std::size_t steps_planned = 0;
-  std::size_t resamples = 0;  // R_k made, the final R_N included (steps + 1 under `always`)
+  std::size_t resamples = 0;  // R_k made, the final R_N included (steps + 1 under `always`); local: steps that resampled somewhere, and step 0
   bool broken = false;
   std::string status_reason;
   std::size_t broken_at_step = 0;  // the first step at which the surface was found broken (if broken)
