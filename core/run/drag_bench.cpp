@@ -94,16 +94,16 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   auto deformation = [&](std::size_t k) {
     return MlsDeformation<3>(drag_handles(kCenter, kRadius, pull, k), drag_handles(kCenter, kRadius, pull, k + 1));
   };
-  // The final points' quality, on a surface of their own.
-  auto measure = [&](const PointSet<3>& points, ThreadPool& pool) {
+  // The final points' quality, on a surface of their own, against the exact shape.
+  auto measure = [&](const PointSet<3>& points, const PointSet<3>& exact_shape, ThreadPool& pool) {
     report.points_final = points.size();
-    if (tracers.empty()) return;
+    if (exact_shape.empty()) return;
     report.spacing_h = spacing_stats(points, h);
     AmlsSurface<3> surface(grid, AmlsParameters{});
     surface.set_points(points);
     surface.hash_points(pool);
     surface.update_normals(pool);
-    measure_tracers(surface, tracers.positions, pool, report);
+    measure_tracers(surface, exact_shape.positions, pool, report);
   };
   if (config.resample == DragResample::always) {
     DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
@@ -120,12 +120,16 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
       if (!tracers.empty()) map.apply(tracers, surface.pool());
     }
     surface.resample_only();
-    measure(surface.points(), surface.pool());
+    measure(surface.points(), tracers, surface.pool());
   } else {
     LocalDeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
     surface.set_points(sample_sphere(kCenter, kRadius, config.points));
     surface.resample_all();
     report.points_initial = surface.points().size();
+    // The exact shape of this loop: the tracers mapped exactly from the same
+    // rest states as the points (a new one at every resample).
+    PointSet<3> rest_tracers = tracers;
+    std::vector<Vec<3>> tracers_rest_handles = drag_handles(kCenter, kRadius, pull, 0);
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
       Stopwatch clock;
@@ -133,9 +137,19 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
       report.step_seconds.push_back(clock.lap());
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;
-      if (!tracers.empty()) map.apply(tracers, surface.pool());
+      if (tracers.empty()) continue;
+      map.apply(tracers, surface.pool());
+      if (surface.rest_handles() != tracers_rest_handles) {
+        MlsDeformation<3>(tracers_rest_handles, surface.rest_handles()).apply(rest_tracers, surface.pool());
+        tracers_rest_handles = surface.rest_handles();
+      }
     }
-    measure(surface.points(), surface.pool());
+    MlsDeformation<3>(tracers_rest_handles, drag_handles(kCenter, kRadius, pull, config.steps))
+        .apply(rest_tracers, surface.pool());
+    for (std::size_t i = 0; i < tracers.size(); ++i)
+      report.rest_map_drift_h =
+          std::max(report.rest_map_drift_h, (rest_tracers.positions[i] - tracers.positions[i]).norm() / h);
+    measure(surface.points(), rest_tracers, surface.pool());
   }
   return report;
 }
