@@ -174,10 +174,17 @@ struct MlsRestLattice<D>::Layout {
   std::size_t points = 0;
   bool fell_back = false;  // see MlsLatticeStats::fell_back
   Box<D> box;
-  std::vector<std::uint32_t> point_cell;  // each point's cell (index in the box)
-  std::vector<IVec<D>> cells;             // the cells holding points, row-major
-  std::vector<IVec<D>> node_list;         // their nodes
-  std::vector<std::int32_t> node_slot;    // node index in the box -> in node_list, -1: none
+  std::vector<IVec<D>> cells;                                 // the cells holding points, row-major
+  std::vector<std::array<std::uint32_t, 1 << D>> cell_nodes;  // each cell's corners, in node_list
+  std::vector<IVec<D>> node_list;                             // the cells' nodes
+  std::vector<std::uint32_t> point_cell;                      // each point's cell, in `cells`
+
+  template <typename T>
+  std::array<const T*, 1 << D> corners(const std::vector<T>& at_nodes, std::size_t cell) const {
+    std::array<const T*, 1 << D> out;
+    for (std::size_t v = 0; v < out.size(); ++v) out[v] = &at_nodes[cell_nodes[cell][v]];
+    return out;
+  }
 };
 
 template <int D>
@@ -212,27 +219,34 @@ MlsRestLattice<D>::MlsRestLattice(const PointSet<D>& points, const MlsLatticeOpt
     return;
   }
 
-  // The cells holding points, and their nodes.
+  // The cells holding points (first by their index in the box), and their nodes.
   l.point_cell.resize(n);
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
     Vec<D> t;
     for (std::size_t i = begin; i < end; ++i)
       l.point_cell[i] = static_cast<std::uint32_t>(l.box.cell_index(l.box.locate(points.positions[i], t)));
   });
-  std::vector<std::uint8_t> used(l.box.count(0), 0);
-  for (const std::uint32_t c : l.point_cell) used[c] = 1;
-  l.node_slot.assign(l.box.count(1), -1);
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> cell_in_list(l.box.count(0), kNone);
+  for (const std::uint32_t c : l.point_cell) cell_in_list[c] = 0;
+  std::vector<std::uint32_t> node_in_list(l.box.count(1), kNone);
   for_each_index_in_box<D>(IVec<D>::Zero(), l.box.cells.array() - 1, [&](const IVec<D>& c) {
-    if (!used[l.box.cell_index(c)]) return;
+    std::uint32_t& in_list = cell_in_list[l.box.cell_index(c)];
+    if (in_list == kNone) return;
+    in_list = static_cast<std::uint32_t>(l.cells.size());
     l.cells.push_back(c);
+    std::array<std::uint32_t, 1 << D>& corners = l.cell_nodes.emplace_back();
     for (int v = 0; v < (1 << D); ++v) {
       const IVec<D> node = c + corner<D>(v);
-      std::int32_t& slot = l.node_slot[l.box.node_index(node)];
-      if (slot >= 0) continue;
-      slot = static_cast<std::int32_t>(l.node_list.size());
-      l.node_list.push_back(node);
+      std::uint32_t& slot = node_in_list[l.box.node_index(node)];
+      if (slot == kNone) {
+        slot = static_cast<std::uint32_t>(l.node_list.size());
+        l.node_list.push_back(node);
+      }
+      corners[static_cast<std::size_t>(v)] = slot;
     }
   });
+  for (std::uint32_t& c : l.point_cell) c = cell_in_list[c];
 }
 
 template <int D>
@@ -273,30 +287,26 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   const Box<D>& box = l.box;
 
   // The nodes, evaluated exactly.
-  NodeSamples<D> nodes;
-  nodes.slot = l.node_slot;
-  nodes.samples.resize(l.node_list.size());
+  std::vector<Sample<D>> nodes(l.node_list.size());
   pool.parallel_for(l.node_list.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) nodes.samples[k] = exact_sample(map, box.node_position(l.node_list[k]));
+    for (std::size_t k = begin; k < end; ++k) nodes[k] = exact_sample(map, box.node_position(l.node_list[k]));
   });
 
   // Check every cell; refine those that fail.
   constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> refined_of(box.count(0), kInterpolated);  // cell -> its Refined, if refined
-  std::vector<float> cell_strain(box.count(0), 0.0F);
-  std::vector<std::uint8_t> refine_cell(l.cells.size(), 0);
+  std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  std::vector<float> cell_strain(l.cells.size(), 0.0F);
   pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      const auto corners = nodes.corners(box, l.cells[k]);
-      refine_cell[k] =
-          options.interpolate && needs_refinement(map, box, l.cells[k], corners, options.tolerance) ? 1 : 0;
-      cell_strain[box.cell_index(l.cells[k])] = strain_of<D>(corners, box.spacing);
+      const auto corners = l.corners(nodes, k);
+      if (options.interpolate && needs_refinement(map, box, l.cells[k], corners, options.tolerance)) refined_of[k] = 0;
+      cell_strain[k] = strain_of<D>(corners, box.spacing);
     }
   });
   std::vector<IVec<D>> to_refine;
   for (std::size_t k = 0; k < l.cells.size(); ++k)
-    if (refine_cell[k]) {
-      refined_of[box.cell_index(l.cells[k])] = static_cast<std::uint32_t>(to_refine.size());
+    if (refined_of[k] != kInterpolated) {
+      refined_of[k] = static_cast<std::uint32_t>(to_refine.size());
       to_refine.push_back(l.cells[k]);
     }
   std::vector<Refined<D>> refined(to_refine.size());
@@ -306,7 +316,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
 
   stats.cells = l.cells.size();
   if (!options.interpolate) {
-    stats.evaluations = l.node_list.size() + n;
+    stats.evaluations = nodes.size() + n;
     stats.exact_points = n;
     map_exactly();
     if (strain)
@@ -317,7 +327,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   // The points.
   stats.refined_cells = refined.size();
   // Nodes and centre checks, coarse and refined; the exact points are added below.
-  stats.evaluations = l.node_list.size() + l.cells.size();
+  stats.evaluations = nodes.size() + l.cells.size();
   for (const Refined<D>& r : refined) stats.evaluations += r.nodes.samples.size() + r.exact.size();
   for (const Refined<D>& r : refined)
     for (const std::uint8_t e : r.exact) stats.exact_cells += e;
@@ -329,12 +339,13 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     Vec<D> t;
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D> p = points.positions[i];
-      const IVec<D> c = box.locate(p, t);
-      const std::uint32_t r = refined_of[l.point_cell[i]];
+      const std::uint32_t k = l.point_cell[i];
+      const std::uint32_t r = refined_of[k];
       Sample<D> sample;
-      float point_strain = cell_strain[l.point_cell[i]];
+      float point_strain = cell_strain[k];
       if (r == kInterpolated) {
-        sample = interpolate<D>(nodes.corners(box, c), t);
+        box.locate(p, t);
+        sample = interpolate<D>(l.corners(nodes, k), t);
       } else {
         const Refined<D>& cell = refined[r];
         const IVec<D> s = cell.box.locate(p, t);
