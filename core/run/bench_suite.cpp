@@ -55,14 +55,14 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
   c.timings = r.timings.phases();
   c.peak_memory_mib = peak_memory_mib();
   c.threads = threads;
-  char text[400];
+  char text[480];
   std::snprintf(text, sizeof text,
                 "%zu steps: %.1f ms median, %.1f ms max per step, %.0f points resampled per step; after: spacing "
                 "%.2f/%.2f/%.2f h (min/median/max), exact shape to surface %.2g/%.2g h (mean/max), %zu holes in %zu "
-                "probes",
+                "probes; exact shape %.2g h from the step-by-step one",
                 r.step_seconds.size(), r.median_ms(), r.max_ms(), r.mean_resampled(), r.spacing_h.min,
                 r.spacing_h.median, r.spacing_h.max, r.exact_to_surface_mean_h, r.exact_to_surface_max_h, r.holes,
-                r.probes);
+                r.probes, r.rest_map_drift_h);
   c.result = text;
   c.figures = {{"step_ms_median", r.median_ms()},
                {"step_ms_max", r.max_ms()},
@@ -72,7 +72,8 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
                {"spacing_h_max", r.spacing_h.max},
                {"exact_to_surface_mean_h", r.exact_to_surface_mean_h},
                {"exact_to_surface_max_h", r.exact_to_surface_max_h},
-               {"holes", static_cast<double>(r.holes)}};
+               {"holes", static_cast<double>(r.holes)},
+               {"rest_map_drift_h", r.rest_map_drift_h}};
   return c;
 }
 
