@@ -164,7 +164,7 @@ TEST_CASE("local drag: the points follow the whole drag's map from their rest po
     errors.push_back(worst);
   }
   MESSAGE("largest distance to the exact map of the drag so far, per step (h): " << errors.front() << " ... "
-                                                                                  << errors.back());
+                                                                                 << errors.back());
   // The lattice's tolerance (0.01 h at the cells' centres, up to about 3 times that between them), at every step.
   CHECK(*std::max_element(errors.begin(), errors.end()) < 0.03);
   CHECK(errors.back() > 0.0);  // interpolated, not exact

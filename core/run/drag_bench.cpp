@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <numbers>
 
 #include "core/deform/mls_deformation.hpp"
@@ -55,16 +56,22 @@ void measure_tracers(const AmlsSurface<3>& surface, const std::vector<Vec<3>>& t
   report.exact_to_surface_mean_h = total.defined > 0 ? total.sum / static_cast<double>(total.defined) : 0.0;
 }
 
+double median_of_ms(std::vector<double> seconds) {
+  if (seconds.empty()) return 0.0;
+  std::sort(seconds.begin(), seconds.end());
+  return 1000.0 * seconds[seconds.size() / 2];
+}
+
+// The process's CPU time so far, all threads.
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
 }  // namespace
 
 const char* to_string(DragResample mode) { return mode == DragResample::always ? "always" : "local"; }
 
-double DragBenchReport::median_ms() const {
-  if (step_seconds.empty()) return 0.0;
-  std::vector<double> sorted = step_seconds;
-  std::sort(sorted.begin(), sorted.end());
-  return 1000.0 * sorted[sorted.size() / 2];
-}
+double DragBenchReport::median_ms() const { return median_of_ms(step_seconds); }
+
+double DragBenchReport::cpu_median_ms() const { return median_of_ms(step_cpu_seconds); }
 
 double DragBenchReport::max_ms() const {
   return step_seconds.empty() ? 0.0 : 1000.0 * *std::max_element(step_seconds.begin(), step_seconds.end());
@@ -113,8 +120,10 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
       Stopwatch clock;
+      const double cpu = cpu_seconds();
       const StepStats stats = surface.step(map, 0.0, 1.0);
       report.step_seconds.push_back(clock.lap());
+      report.step_cpu_seconds.push_back(cpu_seconds() - cpu);
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;
       if (!tracers.empty()) map.apply(tracers, surface.pool());
@@ -133,8 +142,10 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
       Stopwatch clock;
+      const double cpu = cpu_seconds();
       const LocalStepStats stats = surface.step(map);
       report.step_seconds.push_back(clock.lap());
+      report.step_cpu_seconds.push_back(cpu_seconds() - cpu);
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;
       if (tracers.empty()) continue;

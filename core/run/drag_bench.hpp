@@ -44,11 +44,15 @@ struct DragBenchReport {
   double h = 0.0;
   std::size_t points_initial = 0;
   std::size_t points_final = 0;
-  std::vector<double> step_seconds;    // per step: map, resampling and index
+  std::vector<double> step_seconds;  // per step: map, resampling and index
+  // Per step, the process's CPU time (all threads): on a shared machine the
+  // wall time grows with the other jobs' load; this much less.
+  std::vector<double> step_cpu_seconds;
   std::vector<std::size_t> resampled;  // per step: points made by the resampler
   PhaseTimings timings;                // summed over the steps
   double median_ms() const;
   double max_ms() const;
+  double cpu_median_ms() const;
   double mean_resampled() const;
   // Quality after the run (with tracers).
   SpacingStats spacing_h;

@@ -75,7 +75,8 @@ void LocalDeformingSurface<D>::rebase(const std::vector<Vec<D>>& handles, MlsKin
     map_from_rest(rest_->current).apply(points_, pool_);
   }
   rest_.reset();
-  rest_.emplace(Rest{points_, MlsRestLattice<D>(points_, lattice_, pool_), strain_, handles, handles, kind, alpha, true});
+  rest_.emplace(
+      Rest{points_, MlsRestLattice<D>(points_, lattice_, pool_), strain_, handles, handles, kind, alpha, true});
 }
 
 template <int D>
