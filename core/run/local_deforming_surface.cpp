@@ -99,8 +99,10 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
     map.apply(points_, pool_);
   }
   const double deform_seconds = clock.lap();
-  LocalStepStats stats = resample_strained();
+  LocalStepStats stats;
+  stats.points_after = points_.size();
   if (resamples) {
+    stats = resample_strained();
     rest_.reset();
     rebase(deformation.to(), deformation.kind(), deformation.alpha());
   }
