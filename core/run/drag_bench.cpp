@@ -41,7 +41,12 @@ void measure_tracers(const AmlsSurface<3>& surface, const std::vector<Vec<3>>& t
       p.max = std::max(p.max, d);
       ++p.defined;
     }
-    partial[static_cast<std::size_t>(block)] = p;
+    // A block may run in pieces (under a cancellation check): add each piece to the block's total.
+    Partial& total = partial[static_cast<std::size_t>(block)];
+    total.sum += p.sum;
+    total.max = std::max(total.max, p.max);
+    total.defined += p.defined;
+    total.holes += p.holes;
   });
   Partial total;
   for (const Partial& p : partial) {
