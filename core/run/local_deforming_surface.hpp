@@ -1,7 +1,7 @@
 #pragma once
 // The deformation loop with local resampling (`--resample local`): each step
 // maps the points by the MLS map (its rotations by the polar iteration), a
-// lattice giving each point the strain of the step
+// lattice giving each point the strain of the map since its rest state
 // (core/deform/mls_lattice.hpp), and resamples
 // only where the summed strain says the sampling has changed
 // (core/resample/local_resampling.hpp). Points elsewhere keep their positions
@@ -12,10 +12,10 @@
 // every step maps them from there by the one map that takes the handles' rest
 // positions to their current ones, interpolated on the lattice (within
 // 0.01 h of the exact map at the cells' centres, exact where it misses). Its
-// error stays within that bound at every step instead of adding up from step
-// to step. A step that resamples maps every point exactly first, and then
-// starts a new rest state for all points (the current handles become the
-// rest handles), so nothing interpolated is ever built upon.
+// error is that of one interpolation at every step (up to a few times the
+// tolerance between the centres) instead of adding up from step to step. A step that resamples maps every point exactly
+// first, and then starts a new rest state for all points (the current handles become the rest handles), so nothing
+// interpolated is ever built upon.
 #include <optional>
 #include <vector>
 
@@ -49,7 +49,7 @@ class LocalDeformingSurface {
   // handles (or kind, or alpha) are not the last step's `to` starts a new
   // rest state, at `from`.
   LocalStepStats step(const MlsDeformation<D>& deformation);
-  // The handles' rest positions of the current rest state (empty before the first step).
+  // The handles' rest positions of the current rest state (empty until a step after set_points or resample_all).
   std::vector<Vec<D>> rest_handles() const;
 
   const PointSet<D>& points() const { return points_; }
