@@ -8,6 +8,8 @@
 
 #include "core/geometry/shapes.hpp"
 #include "core/resample/local_resampling.hpp"
+#include "core/run/drag_bench.hpp"
+#include "core/run/local_deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
 #include "surface_fixtures.hpp"
 
@@ -129,4 +131,72 @@ TEST_CASE("local resampling: no strained point, nothing changes") {
   CHECK(points.positions == before.positions);
   std::vector<float> wrong(3, 0.0F);
   CHECK_THROWS_AS(resampler.resample(points, wrong, pool), std::invalid_argument);
+}
+
+namespace {
+
+// The drag benchmark's handles (core/run/drag_bench.hpp) on a sphere of radius 0.3.
+MlsDeformation<3> drag_step(double pull, std::size_t step) {
+  const Vec<3> c(0.5, 0.5, 0.5);
+  return MlsDeformation<3>(drag_handles(c, 0.3, pull, step), drag_handles(c, 0.3, pull, step + 1));
+}
+
+}  // namespace
+
+TEST_CASE("local drag: the points follow the whole drag's map from their rest positions, its error does not add up") {
+  const double h = 0.3 * std::sqrt(0.83 * 4.0 * 3.14159265 / 8000.0);
+  LocalDeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, 2);
+  surface.set_points(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 8000));
+  surface.resample_all();
+  const PointSet<3> start = surface.points();
+  std::vector<double> errors;
+  const double pull = 0.1 * h;  // mild on a sphere only 25 h wide: nothing is resampled
+  for (std::size_t k = 0; k < 12; ++k) {
+    const LocalStepStats stats = surface.step(drag_step(pull, k));
+    REQUIRE(stats.resample.flagged_cells == 0);
+    CHECK(surface.rest_handles() == drag_step(pull, 0).from());
+    PointSet<3> exact = start;
+    MlsDeformation<3>(drag_step(pull, 0).from(), drag_step(pull, k).to()).apply(exact, surface.pool());
+    REQUIRE(exact.size() == surface.points().size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < exact.size(); ++i)
+      worst = std::max(worst, (exact.positions[i] - surface.points().positions[i]).norm() / h);
+    errors.push_back(worst);
+  }
+  MESSAGE("largest distance to the exact map of the drag so far, per step (h): " << errors.front() << " ... "
+                                                                                 << errors.back());
+  // The lattice's tolerance (0.01 h at the cells' centres, up to about 3 times that between them), at every step.
+  CHECK(*std::max_element(errors.begin(), errors.end()) < 0.03);
+  CHECK(errors.back() > 0.0);  // interpolated, not exact
+  // Handles that are not where the last step left them: a new drag, from where they are now.
+  std::vector<Vec<3>> moved = drag_step(pull, 11).to(), target = moved;
+  moved[1].x() += h;
+  target[1].x() += 1.1 * h;
+  const LocalStepStats stats = surface.step(MlsDeformation<3>(moved, target));
+  REQUIRE(stats.resample.flagged_cells == 0);
+  CHECK(surface.rest_handles() == moved);
+}
+
+TEST_CASE("local drag: a step that resamples maps every point exactly and starts a new rest state") {
+  const double h = 0.3 * std::sqrt(0.83 * 4.0 * 3.14159265 / 6000.0);
+  LocalDeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, 2);
+  surface.set_points(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 6000));
+  surface.resample_all();
+  const PointSet<3> start = surface.points();
+  const double pull = 6.0 * h;  // strains the top past the limit in one step
+  const LocalStepStats stats = surface.step(drag_step(pull, 0));
+  REQUIRE(stats.resample.replaced > 0);
+  CHECK(surface.rest_handles() == drag_step(pull, 0).to());
+  // The kept points come first, in their order: each is the exact map of a start point, to 1e-9 relative.
+  PointSet<3> exact = start;
+  drag_step(pull, 0).apply(exact, surface.pool());
+  const std::size_t kept = surface.points().size() - stats.resample.inserted;
+  std::size_t matched = 0;
+  for (std::size_t i = 0, j = 0; i < kept && j < exact.size(); ++j) {
+    const Vec<3>& p = surface.points().positions[i];
+    if ((p - exact.positions[j]).norm() > 1e-9 * exact.positions[j].norm()) continue;
+    ++matched;
+    ++i;
+  }
+  CHECK(matched == kept);
 }

@@ -284,8 +284,7 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
   Phases phases(control, start ? 2 : 1);
   PointSet<D> before = surface_->points();
   // A stopped step leaves the local loop as it was, with its strain: the next step runs as if it never had.
-  PointSet<D> local_before = start ? PointSet<D>{} : local_->points();
-  std::vector<float> strain_before = start ? std::vector<float>{} : local_->strain();
+  typename LocalDeformingSurface<D>::Saved local_before = start ? typename LocalDeformingSurface<D>::Saved{} : local_->save();
   const bool finished = phases.run(local_->pool(), [&] {
     if (start) {
       if (!phases.next(kResamplingPhase)) return false;
@@ -308,7 +307,7 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
     if (start)
       local_version_ = ~std::uint64_t{0};  // not begun: the next step starts from the surface's points
     else
-      local_->set_points(std::move(local_before), std::move(strain_before));
+      local_->restore(std::move(local_before));
     result = EditResult{};
     result.cancelled = true;
     return result;

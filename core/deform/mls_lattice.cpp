@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "core/geometry/grid.hpp"
@@ -168,17 +169,37 @@ Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec
 }  // namespace
 
 template <int D>
-MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& points, std::vector<float>* strain,
-                                 const MlsLatticeOptions& options, ThreadPool& pool) {
+struct MlsRestLattice<D>::Layout {
+  MlsLatticeOptions options;
+  std::size_t points = 0;
+  bool fell_back = false;  // see MlsLatticeStats::fell_back
+  Box<D> box;
+  std::vector<IVec<D>> cells;                                 // the cells holding points, row-major
+  std::vector<std::array<std::uint32_t, 1 << D>> cell_nodes;  // each cell's corners, in node_list
+  std::vector<IVec<D>> node_list;                             // the cells' nodes
+  std::vector<std::uint32_t> point_cell;                      // each point's cell, in `cells`
+
+  template <typename T>
+  std::array<const T*, 1 << D> corners(const std::vector<T>& at_nodes, std::size_t cell) const {
+    std::array<const T*, 1 << D> out;
+    for (std::size_t v = 0; v < out.size(); ++v) out[v] = &at_nodes[cell_nodes[cell][v]];
+    return out;
+  }
+};
+
+template <int D>
+MlsRestLattice<D>::MlsRestLattice(const PointSet<D>& points, const MlsLatticeOptions& options, ThreadPool& pool)
+    : layout_(std::make_unique<Layout>()) {
   if (!(options.spacing > 0.0) || (options.interpolate && !(options.tolerance > 0.0)) || options.refinement < 1)
     throw std::invalid_argument("MLS lattice: spacing and tolerance must be positive and refinement at least 1");
   const std::size_t n = points.size();
   if (points.normals.size() != n)
     throw std::invalid_argument("MLS lattice: " + std::to_string(n) + " points but " +
                                 std::to_string(points.normals.size()) + " normals");
-  MlsLatticeStats stats;
-  if (strain) strain->resize(n, 0.0F);
-  if (n == 0 || map.from().empty()) return stats;
+  Layout& l = *layout_;
+  l.options = options;
+  l.points = n;
+  if (n == 0) return;
 
   // The points' box, in lattice cells.
   Vec<D> lo = points.positions.front(), hi = lo;
@@ -186,103 +207,145 @@ MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& poin
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  Box<D> box;
-  box.origin = lo;
-  box.spacing = options.spacing;
+  l.box.origin = lo;
+  l.box.spacing = options.spacing;
   double total_cells = 1.0;
   for (int a = 0; a < D; ++a) {
-    box.cells[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / options.spacing)) + 1;
-    total_cells *= static_cast<double>(box.cells[a]);
+    l.box.cells[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / options.spacing)) + 1;
+    total_cells *= static_cast<double>(l.box.cells[a]);
   }
   if (!std::isfinite(total_cells) || total_cells > kMaxCellsPerPoint * static_cast<double>(n) + kMinCells) {
-    stats.fell_back = true;
-    stats.exact_points = stats.evaluations = n;
-    map.apply(points, pool);
-    if (strain) std::fill(strain->begin(), strain->end(), std::numeric_limits<float>::infinity());
-    return stats;
+    l.fell_back = true;
+    return;
   }
 
-  // The cells holding points, and their nodes, evaluated exactly.
-  std::vector<std::uint32_t> point_cell(n);
+  // The cells holding points (first by their index in the box), and their nodes.
+  l.point_cell.resize(n);
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
     Vec<D> t;
     for (std::size_t i = begin; i < end; ++i)
-      point_cell[i] = static_cast<std::uint32_t>(box.cell_index(box.locate(points.positions[i], t)));
+      l.point_cell[i] = static_cast<std::uint32_t>(l.box.cell_index(l.box.locate(points.positions[i], t)));
   });
-  std::vector<std::uint8_t> used(box.count(0), 0);
-  for (const std::uint32_t c : point_cell) used[c] = 1;
-  std::vector<IVec<D>> cells;
-  NodeSamples<D> nodes;
-  nodes.slot.assign(box.count(1), -1);
-  std::vector<IVec<D>> node_list;
-  for_each_index_in_box<D>(IVec<D>::Zero(), box.cells.array() - 1, [&](const IVec<D>& c) {
-    if (!used[box.cell_index(c)]) return;
-    cells.push_back(c);
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> cell_in_list(l.box.count(0), kNone);
+  for (const std::uint32_t c : l.point_cell) cell_in_list[c] = 0;
+  std::vector<std::uint32_t> node_in_list(l.box.count(1), kNone);
+  for_each_index_in_box<D>(IVec<D>::Zero(), l.box.cells.array() - 1, [&](const IVec<D>& c) {
+    std::uint32_t& in_list = cell_in_list[l.box.cell_index(c)];
+    if (in_list == kNone) return;
+    in_list = static_cast<std::uint32_t>(l.cells.size());
+    l.cells.push_back(c);
+    std::array<std::uint32_t, 1 << D>& corners = l.cell_nodes.emplace_back();
     for (int v = 0; v < (1 << D); ++v) {
       const IVec<D> node = c + corner<D>(v);
-      std::int32_t& slot = nodes.slot[box.node_index(node)];
-      if (slot >= 0) continue;
-      slot = static_cast<std::int32_t>(node_list.size());
-      node_list.push_back(node);
+      std::uint32_t& slot = node_in_list[l.box.node_index(node)];
+      if (slot == kNone) {
+        slot = static_cast<std::uint32_t>(l.node_list.size());
+        l.node_list.push_back(node);
+      }
+      corners[static_cast<std::size_t>(v)] = slot;
     }
   });
-  nodes.samples.resize(node_list.size());
-  pool.parallel_for(node_list.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) nodes.samples[k] = exact_sample(map, box.node_position(node_list[k]));
+  for (std::uint32_t& c : l.point_cell) c = cell_in_list[c];
+}
+
+template <int D>
+MlsRestLattice<D>::~MlsRestLattice() = default;
+template <int D>
+MlsRestLattice<D>::MlsRestLattice(MlsRestLattice&&) noexcept = default;
+template <int D>
+MlsRestLattice<D>& MlsRestLattice<D>::operator=(MlsRestLattice&&) noexcept = default;
+
+template <int D>
+MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const PointSet<D>& points, PointSet<D>& mapped,
+                                       std::vector<float>* strain, ThreadPool& pool) const {
+  const Layout& l = *layout_;
+  const MlsLatticeOptions& options = l.options;
+  const std::size_t n = points.size();
+  if (n != l.points || points.normals.size() != n)
+    throw std::invalid_argument("MLS lattice: built over " + std::to_string(l.points) + " points, asked to map " +
+                                std::to_string(n) + " points with " + std::to_string(points.normals.size()) +
+                                " normals");
+  MlsLatticeStats stats;
+  if (strain) strain->resize(n, 0.0F);
+  // The exact map, in place on the destination (a copy of the source unless they are one).
+  auto map_exactly = [&] {
+    if (&mapped != &points) mapped = points;
+    map.apply(mapped, pool);
+  };
+  if (n == 0 || map.from().empty()) {
+    if (&mapped != &points) mapped = points;
+    return stats;
+  }
+  if (l.fell_back) {
+    stats.fell_back = true;
+    stats.exact_points = stats.evaluations = n;
+    map_exactly();
+    if (strain) std::fill(strain->begin(), strain->end(), std::numeric_limits<float>::infinity());
+    return stats;
+  }
+  const Box<D>& box = l.box;
+
+  // The nodes, evaluated exactly.
+  std::vector<Sample<D>> nodes(l.node_list.size());
+  pool.parallel_for(l.node_list.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) nodes[k] = exact_sample(map, box.node_position(l.node_list[k]));
   });
 
   // Check every cell; refine those that fail.
   constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> refined_of(box.count(0), kInterpolated);  // cell -> its Refined, if refined
-  std::vector<float> cell_strain(box.count(0), 0.0F);
-  std::vector<std::uint8_t> refine_cell(cells.size(), 0);
-  pool.parallel_for(cells.size(), [&](std::size_t begin, std::size_t end, int) {
+  std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  std::vector<float> cell_strain(l.cells.size(), 0.0F);
+  pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      const auto corners = nodes.corners(box, cells[k]);
-      refine_cell[k] = options.interpolate && needs_refinement(map, box, cells[k], corners, options.tolerance) ? 1 : 0;
-      cell_strain[box.cell_index(cells[k])] = strain_of<D>(corners, box.spacing);
+      const auto corners = l.corners(nodes, k);
+      if (options.interpolate && needs_refinement(map, box, l.cells[k], corners, options.tolerance)) refined_of[k] = 0;
+      cell_strain[k] = strain_of<D>(corners, box.spacing);
     }
   });
   std::vector<IVec<D>> to_refine;
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    if (refine_cell[k]) {
-      refined_of[box.cell_index(cells[k])] = static_cast<std::uint32_t>(to_refine.size());
-      to_refine.push_back(cells[k]);
+  for (std::size_t k = 0; k < l.cells.size(); ++k)
+    if (refined_of[k] != kInterpolated) {
+      refined_of[k] = static_cast<std::uint32_t>(to_refine.size());
+      to_refine.push_back(l.cells[k]);
     }
   std::vector<Refined<D>> refined(to_refine.size());
   pool.parallel_for(to_refine.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) refined[k] = refine(map, box, to_refine[k], options);
   });
 
-  stats.cells = cells.size();
+  stats.cells = l.cells.size();
   if (!options.interpolate) {
-    stats.evaluations = node_list.size() + n;
+    stats.evaluations = nodes.size() + n;
     stats.exact_points = n;
-    map.apply(points, pool);
+    map_exactly();
     if (strain)
-      for (std::size_t i = 0; i < n; ++i) (*strain)[i] += cell_strain[point_cell[i]];
+      for (std::size_t i = 0; i < n; ++i) (*strain)[i] += cell_strain[l.point_cell[i]];
     return stats;
   }
 
   // The points.
   stats.refined_cells = refined.size();
   // Nodes and centre checks, coarse and refined; the exact points are added below.
-  stats.evaluations = node_list.size() + cells.size();
+  stats.evaluations = nodes.size() + l.cells.size();
   for (const Refined<D>& r : refined) stats.evaluations += r.nodes.samples.size() + r.exact.size();
   for (const Refined<D>& r : refined)
     for (const std::uint8_t e : r.exact) stats.exact_cells += e;
   std::vector<std::size_t> exact_points(static_cast<std::size_t>(pool.threads()), 0);
+  mapped.positions.resize(n);
+  mapped.normals.resize(n);
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
     std::size_t exact_here = 0;
     Vec<D> t;
     for (std::size_t i = begin; i < end; ++i) {
-      Vec<D>& p = points.positions[i];
-      const IVec<D> c = box.locate(p, t);
-      const std::uint32_t r = refined_of[point_cell[i]];
+      const Vec<D> p = points.positions[i];
+      const std::uint32_t k = l.point_cell[i];
+      const std::uint32_t r = refined_of[k];
       Sample<D> sample;
-      float point_strain = cell_strain[point_cell[i]];
+      float point_strain = cell_strain[k];
       if (r == kInterpolated) {
-        sample = interpolate<D>(nodes.corners(box, c), t);
+        box.locate(p, t);
+        sample = interpolate<D>(l.corners(nodes, k), t);
       } else {
         const Refined<D>& cell = refined[r];
         const IVec<D> s = cell.box.locate(p, t);
@@ -295,8 +358,8 @@ MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& poin
           sample = interpolate<D>(cell.nodes.corners(cell.box, s), t);
         }
       }
-      p = sample.position;
-      points.normals[i] = carry_normal<D>(sample.linear, points.normals[i]);
+      mapped.positions[i] = sample.position;
+      mapped.normals[i] = carry_normal<D>(sample.linear, points.normals[i]);
       if (strain) (*strain)[i] += point_strain;
     }
     exact_points[static_cast<std::size_t>(block)] += exact_here;
@@ -306,6 +369,14 @@ MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& poin
   return stats;
 }
 
+template <int D>
+MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& points, std::vector<float>* strain,
+                                 const MlsLatticeOptions& options, ThreadPool& pool) {
+  return MlsRestLattice<D>(points, options, pool).map(map, points, points, strain, pool);
+}
+
+template class MlsRestLattice<2>;
+template class MlsRestLattice<3>;
 template MlsLatticeStats apply_on_lattice<2>(const MlsDeformation<2>&, PointSet<2>&, std::vector<float>*,
                                              const MlsLatticeOptions&, ThreadPool&);
 template MlsLatticeStats apply_on_lattice<3>(const MlsDeformation<3>&, PointSet<3>&, std::vector<float>*,

@@ -23,6 +23,7 @@
 // It is not the exact map's result bit for bit: callers that must reproduce
 // the paper's runs keep MlsDeformation::apply().
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "core/deform/mls_deformation.hpp"
@@ -60,7 +61,36 @@ struct MlsLatticeStats {
 template <int D>
 MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& deformation, PointSet<D>& points, std::vector<float>* strain,
                                  const MlsLatticeOptions& options, ThreadPool& pool);
+// The lattice over a fixed set of points, built once: the cells holding
+// points, their nodes and each point's cell. A surface that keeps its points'
+// rest positions during a drag maps them from there by the whole drag's map
+// at every step; each step then costs the nodes' exact map, the checks and
+// the interpolation, and its error is that of one map, whatever the number of
+// steps.
+template <int D>
+class MlsRestLattice {
+ public:
+  // Throws std::invalid_argument for a spacing or tolerance not > 0, a
+  // refinement < 1, or normals that do not match the points.
+  MlsRestLattice(const PointSet<D>& points, const MlsLatticeOptions& options, ThreadPool& pool);
+  ~MlsRestLattice();
+  MlsRestLattice(MlsRestLattice&&) noexcept;
+  MlsRestLattice& operator=(MlsRestLattice&&) noexcept;
 
+  // As apply_on_lattice, with `points` left as they are and their images
+  // written to `mapped` (resized to them; it may be `points` itself).
+  // `points` must be the set the lattice was built over (its size is
+  // checked; std::invalid_argument otherwise).
+  MlsLatticeStats map(const MlsDeformation<D>& deformation, const PointSet<D>& points, PointSet<D>& mapped,
+                      std::vector<float>* strain, ThreadPool& pool) const;
+
+ private:
+  struct Layout;
+  std::unique_ptr<Layout> layout_;
+};
+
+extern template class MlsRestLattice<2>;
+extern template class MlsRestLattice<3>;
 extern template MlsLatticeStats apply_on_lattice<2>(const MlsDeformation<2>&, PointSet<2>&, std::vector<float>*,
                                                     const MlsLatticeOptions&, ThreadPool&);
 extern template MlsLatticeStats apply_on_lattice<3>(const MlsDeformation<3>&, PointSet<3>&, std::vector<float>*,

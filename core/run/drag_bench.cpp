@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <numbers>
 
 #include "core/deform/mls_deformation.hpp"
@@ -40,7 +41,12 @@ void measure_tracers(const AmlsSurface<3>& surface, const std::vector<Vec<3>>& t
       p.max = std::max(p.max, d);
       ++p.defined;
     }
-    partial[static_cast<std::size_t>(block)] = p;
+    // A block may run in pieces (under a cancellation check): add each piece to the block's total.
+    Partial& total = partial[static_cast<std::size_t>(block)];
+    total.sum += p.sum;
+    total.max = std::max(total.max, p.max);
+    total.defined += p.defined;
+    total.holes += p.holes;
   });
   Partial total;
   for (const Partial& p : partial) {
@@ -55,16 +61,22 @@ void measure_tracers(const AmlsSurface<3>& surface, const std::vector<Vec<3>>& t
   report.exact_to_surface_mean_h = total.defined > 0 ? total.sum / static_cast<double>(total.defined) : 0.0;
 }
 
+double median_of_ms(std::vector<double> seconds) {
+  if (seconds.empty()) return 0.0;
+  std::sort(seconds.begin(), seconds.end());
+  return 1000.0 * seconds[seconds.size() / 2];
+}
+
+// The process's CPU time so far, all threads.
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
 }  // namespace
 
 const char* to_string(DragResample mode) { return mode == DragResample::always ? "always" : "local"; }
 
-double DragBenchReport::median_ms() const {
-  if (step_seconds.empty()) return 0.0;
-  std::vector<double> sorted = step_seconds;
-  std::sort(sorted.begin(), sorted.end());
-  return 1000.0 * sorted[sorted.size() / 2];
-}
+double DragBenchReport::median_ms() const { return median_of_ms(step_seconds); }
+
+double DragBenchReport::cpu_median_ms() const { return median_of_ms(step_cpu_seconds); }
 
 double DragBenchReport::max_ms() const {
   return step_seconds.empty() ? 0.0 : 1000.0 * *std::max_element(step_seconds.begin(), step_seconds.end());
@@ -94,16 +106,16 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   auto deformation = [&](std::size_t k) {
     return MlsDeformation<3>(drag_handles(kCenter, kRadius, pull, k), drag_handles(kCenter, kRadius, pull, k + 1));
   };
-  // The final points' quality, on a surface of their own.
-  auto measure = [&](const PointSet<3>& points, ThreadPool& pool) {
+  // The final points' quality, on a surface of their own, against the exact shape.
+  auto measure = [&](const PointSet<3>& points, const PointSet<3>& exact_shape, ThreadPool& pool) {
     report.points_final = points.size();
-    if (tracers.empty()) return;
+    if (exact_shape.empty()) return;
     report.spacing_h = spacing_stats(points, h);
     AmlsSurface<3> surface(grid, AmlsParameters{});
     surface.set_points(points);
     surface.hash_points(pool);
     surface.update_normals(pool);
-    measure_tracers(surface, tracers.positions, pool, report);
+    measure_tracers(surface, exact_shape.positions, pool, report);
   };
   if (config.resample == DragResample::always) {
     DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
@@ -113,29 +125,47 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
       Stopwatch clock;
+      const double cpu = cpu_seconds();
       const StepStats stats = surface.step(map, 0.0, 1.0);
       report.step_seconds.push_back(clock.lap());
+      report.step_cpu_seconds.push_back(cpu_seconds() - cpu);
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;
       if (!tracers.empty()) map.apply(tracers, surface.pool());
     }
     surface.resample_only();
-    measure(surface.points(), surface.pool());
+    measure(surface.points(), tracers, surface.pool());
   } else {
     LocalDeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
     surface.set_points(sample_sphere(kCenter, kRadius, config.points));
     surface.resample_all();
     report.points_initial = surface.points().size();
+    // The exact shape of this loop: the tracers mapped exactly from the same
+    // rest states as the points (a new one at every resample).
+    PointSet<3> rest_tracers = tracers;
+    std::vector<Vec<3>> tracers_rest_handles = drag_handles(kCenter, kRadius, pull, 0);
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
       Stopwatch clock;
+      const double cpu = cpu_seconds();
       const LocalStepStats stats = surface.step(map);
       report.step_seconds.push_back(clock.lap());
+      report.step_cpu_seconds.push_back(cpu_seconds() - cpu);
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;
-      if (!tracers.empty()) map.apply(tracers, surface.pool());
+      if (tracers.empty()) continue;
+      map.apply(tracers, surface.pool());
+      if (surface.rest_handles() != tracers_rest_handles) {
+        MlsDeformation<3>(tracers_rest_handles, surface.rest_handles()).apply(rest_tracers, surface.pool());
+        tracers_rest_handles = surface.rest_handles();
+      }
     }
-    measure(surface.points(), surface.pool());
+    MlsDeformation<3>(tracers_rest_handles, drag_handles(kCenter, kRadius, pull, config.steps))
+        .apply(rest_tracers, surface.pool());
+    for (std::size_t i = 0; i < tracers.size(); ++i)
+      report.rest_map_drift_h =
+          std::max(report.rest_map_drift_h, (rest_tracers.positions[i] - tracers.positions[i]).norm() / h);
+    measure(surface.points(), rest_tracers, surface.pool());
   }
   return report;
 }

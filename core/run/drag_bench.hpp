@@ -11,7 +11,9 @@
 // spacing of the final points, and tracers (a denser sampling of the initial
 // sphere carried by the same maps, never resampled) against the final
 // surface: |F| at each tracer (in h, about its distance to the surface) and
-// where F is undefined there (holes).
+// where F is undefined there (holes). The local policy maps its points from
+// rest states rather than step by step, and its tracers follow the same maps
+// exactly.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -42,11 +44,15 @@ struct DragBenchReport {
   double h = 0.0;
   std::size_t points_initial = 0;
   std::size_t points_final = 0;
-  std::vector<double> step_seconds;    // per step: map, resampling and index
+  std::vector<double> step_seconds;  // per step: map, resampling and index
+  // Per step, the process's CPU time (all threads): on a shared machine the
+  // wall time grows with the other jobs' load; this much less.
+  std::vector<double> step_cpu_seconds;
   std::vector<std::size_t> resampled;  // per step: points made by the resampler
   PhaseTimings timings;                // summed over the steps
   double median_ms() const;
   double max_ms() const;
+  double cpu_median_ms() const;
   double mean_resampled() const;
   // Quality after the run (with tracers).
   SpacingStats spacing_h;
@@ -54,6 +60,10 @@ struct DragBenchReport {
   double exact_to_surface_max_h = 0.0;
   std::size_t holes = 0;  // tracers where F is undefined
   std::size_t probes = 0;
+  // Local only: its exact shape is the tracers mapped from rest states as its
+  // points are (core/run/local_deforming_surface.hpp), not step by step as
+  // always's: the largest distance between the two shapes, in h.
+  double rest_map_drift_h = 0.0;
 };
 
 // The drag's handles after `step` steps, for a sphere about `center` of `radius`.

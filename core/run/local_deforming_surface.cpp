@@ -1,5 +1,6 @@
 #include "core/run/local_deforming_surface.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -10,11 +11,17 @@ namespace amls {
 
 namespace {
 
-// The lattice that measures the strain, in h: a strain cell holds a few
-// hundred points, so it costs a few percent of the map. The points themselves
-// take the exact map: interpolating it errs in the same direction step after
-// step, and without resampling the errors add up (core/deform/mls_lattice.hpp).
-constexpr double kLatticeSpacing = 8.0;
+// The lattice that interpolates the map, in h: a cell holds a few hundred
+// points, so its nodes cost a few percent of mapping every point exactly.
+constexpr double kLatticeSpacing = 12.0;
+// How far (in h) the interpolated map may be from the exact one at a cell's
+// centre. The points are mapped from their rest positions at every step, so
+// this bounds their error at every step; it does not add up.
+constexpr double kLatticeTolerance = 0.01;
+constexpr int kLatticeRefinement = 4;
+// The lattice that measures each step's strain, in h: the strain limits were
+// tuned with it (docs/local-resampling.md).
+constexpr double kStrainLatticeSpacing = 8.0;
 
 }  // namespace
 
@@ -24,7 +31,7 @@ LocalDeformingSurface<D>::LocalDeformingSurface(const Grid<D>& grid, const AmlsP
     : grid_(grid),
       parameters_(parameters),
       resampler_(grid, parameters, variant),
-      lattice_{kLatticeSpacing * grid.spacing(), 0.0, 4, false},
+      lattice_{kLatticeSpacing * grid.spacing(), kLatticeTolerance * grid.spacing(), kLatticeRefinement, true},
       pool_(threads) {
   resampler_.set_options(options);
 }
@@ -33,6 +40,7 @@ template <int D>
 void LocalDeformingSurface<D>::set_points(PointSet<D> points) {
   points_ = std::move(points);
   strain_.assign(points_.size(), std::numeric_limits<float>::infinity());
+  rest_.reset();
 }
 
 template <int D>
@@ -42,6 +50,7 @@ void LocalDeformingSurface<D>::set_points(PointSet<D> points, std::vector<float>
                                 std::to_string(strain.size()) + " strains");
   points_ = std::move(points);
   strain_ = std::move(strain);
+  rest_.reset();
 }
 
 template <int D>
@@ -59,20 +68,85 @@ LocalStepStats LocalDeformingSurface<D>::resample_strained() {
 template <int D>
 LocalStepStats LocalDeformingSurface<D>::resample_all() {
   std::fill(strain_.begin(), strain_.end(), std::numeric_limits<float>::infinity());
+  rest_.reset();
   return resample_strained();
+}
+
+template <int D>
+std::vector<Vec<D>> LocalDeformingSurface<D>::rest_handles() const {
+  return rest_ ? rest_->handles : std::vector<Vec<D>>{};
+}
+
+template <int D>
+void LocalDeformingSurface<D>::restore(Saved saved) {
+  points_ = std::move(saved.points);
+  strain_ = std::move(saved.strain);
+  rest_ = std::move(saved.rest);
+  current_ = std::move(saved.current);
+  exact_ = saved.exact;
+}
+
+template <int D>
+MlsDeformation<D> LocalDeformingSurface<D>::map_from_rest(const std::vector<Vec<D>>& to) const {
+  MlsDeformation<D> map(rest_->handles, to, rest_->kind, rest_->alpha);
+  map.use_polar_iteration(true);
+  return map;
+}
+
+template <int D>
+void LocalDeformingSurface<D>::leave_rest_state() {
+  if (rest_ && !exact_) {
+    points_ = rest_->points;
+    map_from_rest(current_).apply(points_, pool_);
+  }
+  rest_.reset();
+  exact_ = true;
+}
+
+template <int D>
+void LocalDeformingSurface<D>::rebase(const std::vector<Vec<D>>& handles, MlsKind kind, double alpha) {
+  leave_rest_state();
+  rest_ = std::make_shared<const Rest>(Rest{points_, MlsRestLattice<D>(points_, lattice_, pool_), handles, kind, alpha});
+  current_ = handles;
 }
 
 template <int D>
 LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformation) {
   Stopwatch clock;
   const std::size_t before = points_.size();
-  MlsDeformation<D> map_by_polar_iteration = deformation;
-  map_by_polar_iteration.use_polar_iteration(true);
-  const MlsLatticeStats map = apply_on_lattice(map_by_polar_iteration, points_, &strain_, lattice_, pool_);
+  if (!rest_ || current_ != deformation.from() || rest_->kind != deformation.kind() ||
+      rest_->alpha != deformation.alpha())
+    rebase(deformation.from(), deformation.kind(), deformation.alpha());
+  // The strain of this step alone, summed: the whole drag's map can be nearly
+  // rigid where its steps were not (a handle pulled out and back), and the
+  // sampling followed the steps.
+  MlsDeformation<D> step_map(current_, deformation.to(), deformation.kind(), deformation.alpha());
+  step_map.use_polar_iteration(true);
+  const StrainLatticeStats step_strain = add_step_strain<D>(
+      step_map, 0.0, 1.0, points_.positions, kStrainLatticeSpacing * grid_.spacing(), strain_, pool_);
+  const MlsDeformation<D> map = map_from_rest(deformation.to());
+  const MlsLatticeStats mapped = rest_->lattice.map(map, rest_->points, points_, nullptr, pool_);
+  current_ = deformation.to();
+  exact_ = mapped.exact_points == points_.size();
+  const double limit = resampler_.options().strain_limit;
+  const bool resamples = std::any_of(strain_.begin(), strain_.end(), [&](float s) { return s > limit; });
+  // The resample reads the points, and its result becomes the next rest state: map them exactly.
+  if (resamples && !exact_) {
+    points_ = rest_->points;
+    map.apply(points_, pool_);
+    exact_ = true;
+  }
   const double deform_seconds = clock.lap();
-  LocalStepStats stats = resample_strained();
+  LocalStepStats stats;
+  stats.points_after = points_.size();
+  if (resamples) {
+    stats = resample_strained();
+    rest_.reset();
+    rebase(deformation.to(), deformation.kind(), deformation.alpha());
+  }
   stats.points_before = before;
-  stats.map = map;
+  stats.map = mapped;
+  stats.strain_lattice = step_strain;
   stats.timings.deform = deform_seconds;
   return stats;
 }
@@ -80,9 +154,10 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
 template <int D>
 LocalStepStats LocalDeformingSurface<D>::step(const Deformation<D>& deformation, double t0, double t1) {
   Stopwatch clock;
+  leave_rest_state();
   const std::size_t before = points_.size();
-  const StrainLatticeStats lattice =
-      add_step_strain(deformation, t0, t1, points_.positions, lattice_.spacing, strain_, pool_);
+  const StrainLatticeStats lattice = add_step_strain(deformation, t0, t1, points_.positions,
+                                                     kStrainLatticeSpacing * grid_.spacing(), strain_, pool_);
   deformation.deform(points_, t0, t1, pool_);
   const double deform_seconds = clock.lap();
   LocalStepStats stats = resample_strained();

@@ -1,15 +1,27 @@
 #pragma once
 // The deformation loop with local resampling (`--resample local`): each step
-// maps the points by the MLS map (its rotations by the polar iteration), a
-// lattice giving each point the strain of the step
-// (core/deform/mls_lattice.hpp), and resamples
+// maps the points by the MLS map (its rotations by the polar iteration), an
+// 8 h lattice adding to each point the strain of the step
+// (core/deform/strain_lattice.hpp), and resamples
 // only where the summed strain says the sampling has changed
 // (core/resample/local_resampling.hpp). Points elsewhere keep their positions
 // and carried normals; no whole-surface fit, F, walk or index is made.
 //
+// The MLS map from a rest state: during a drag the points keep their rest
+// positions (where they were when the drag, or the last resample, began) and
+// every step maps them from there by the one map that takes the handles' rest
+// positions to their current ones, interpolated on the lattice (within
+// 0.01 h of the exact map at the cells' centres, exact where it misses). Its
+// error is that of one interpolation at every step (up to a few times the
+// tolerance between the centres) instead of adding up from step to step. A step that resamples maps every point exactly
+// first, and then starts a new rest state for all points (the current handles become the rest handles), so nothing
+// interpolated is ever built upon.
+//
 // Any other deformation (a velocity field's flow) takes a step of its own:
-// the strain comes from the deformation's images of the nodes of the same
-// lattice (core/deform/strain_lattice.hpp), then the points are deformed.
+// the strain comes from the deformation's images of the nodes of an 8 h
+// lattice (core/deform/strain_lattice.hpp), then the points are deformed; it
+// ends any rest state.
+#include <memory>
 #include <vector>
 
 #include "core/deform/mls_lattice.hpp"
@@ -31,18 +43,21 @@ struct LocalStepStats {
 template <int D>
 class LocalDeformingSurface {
  public:
-  // The strain's lattice is 8 h wide.
   LocalDeformingSurface(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant, int threads = 1,
                         const LocalResampleOptions& options = {});
 
   // Replaces the point set; the next step (or resample_all) resamples all of it.
   void set_points(PointSet<D> points);
   // Replaces the point set and the strain each point carries (one per point),
-  // as points() and strain() gave them: a saved state taken up again.
+  // as points() and strain() gave them: a saved state taken up again. The next
+  // MLS step starts a new rest state from these points.
   void set_points(PointSet<D> points, std::vector<float> strain);
   // Resamples the whole surface now, with no deformation.
   LocalStepStats resample_all();
-  // One step: map by `deformation` (from its `from` to its `to` handles), then resample where strained.
+  // One step: the handles move from deformation.from() to deformation.to();
+  // the points follow and are resampled where strained. A step whose `from`
+  // handles (or kind, or alpha) are not the last step's `to` starts a new
+  // rest state, at `from`.
   LocalStepStats step(const MlsDeformation<D>& deformation);
   // One step of any deformation from t0 to t1: the strain measured on the
   // lattice, the points deformed, then resampled where strained.
@@ -52,13 +67,47 @@ class LocalDeformingSurface {
   // to evaluate or measure F (made anew: the loop itself keeps no index).
   AmlsSurface<D> fitted_surface();
 
+  // The handles' rest positions of the current rest state (empty until a step after set_points or resample_all).
+  std::vector<Vec<D>> rest_handles() const;
+
   const PointSet<D>& points() const { return points_; }
   const std::vector<float>& strain() const { return strain_; }
   const Grid<D>& grid() const { return grid_; }
   ThreadPool& pool() { return pool_; }
 
  private:
+  // The rest state of the MLS steps: the points and the handles when it
+  // began, and its lattice. Shared, never changed: a saved state holds it
+  // without copying the lattice.
+  struct Rest {
+    PointSet<D> points;
+    MlsRestLattice<D> lattice;
+    std::vector<Vec<D>> handles;
+    MlsKind kind = MlsKind::rigid;
+    double alpha = 1.0;
+  };
+
+ public:
+  // Everything a step reads: taken before a step and given back, the next
+  // step runs as if the one in between never had (a stopped step).
+  struct Saved {
+    PointSet<D> points;
+    std::vector<float> strain;
+    std::shared_ptr<const Rest> rest;
+    std::vector<Vec<D>> current;
+    bool exact = true;
+  };
+  Saved save() const { return Saved{points_, strain_, rest_, current_, exact_}; }
+  void restore(Saved saved);
+
+ private:
   LocalStepStats resample_strained();
+  // The map from the rest handles to `to`, by the polar iteration.
+  MlsDeformation<D> map_from_rest(const std::vector<Vec<D>>& to) const;
+  // Ends the rest state: points_ becomes the exact map of the rest points if it was interpolated.
+  void leave_rest_state();
+  // Starts a new rest state at `handles` from the current points, mapped exactly first.
+  void rebase(const std::vector<Vec<D>>& handles, MlsKind kind, double alpha);
 
   Grid<D> grid_;
   AmlsParameters parameters_;
@@ -66,6 +115,10 @@ class LocalDeformingSurface {
   MlsLatticeOptions lattice_;
   PointSet<D> points_;
   std::vector<float> strain_;
+  // None before the first MLS step and after the points change otherwise.
+  std::shared_ptr<const Rest> rest_;
+  std::vector<Vec<D>> current_;  // the handles the points were last mapped to
+  bool exact_ = true;            // points_ is the exact map of the rest points to current_
   ThreadPool pool_;
 };
 
