@@ -168,6 +168,7 @@ std::size_t probes_in_holes(const std::vector<Vec<3>>& output, const std::vector
 TEST_CASE("supports widened where the input is sparse close a sphere sampled 4 x more sparsely on one half") {
   const PointSet<3> input = half_sparse_sphere(3000);
   PointSetResampling options;
+  options.widen_support = true;
   // The dense half's h: the rule over a sphere sampled densely all over.
   options.spacing = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
   const double h = options.spacing;
@@ -185,7 +186,10 @@ TEST_CASE("supports widened where the input is sparse close a sphere sampled 4 x
   double worst = 0.0;
   for (const Vec<3>& p : widened.points.positions) worst = std::max(worst, std::abs(p.norm() - 1.0));
   CHECK(worst < 0.5 * h);
+  options.threads = 2;  // the same points for any thread count
+  CHECK(resample_point_set(input, options).points.positions == widened.points.positions);
 
+  options.threads = 1;
   options.widen_support = false;
   const ResampledPointSet<3> uniform = resample_point_set(input, options);
   CHECK(uniform.widening.widened_points == 0);
@@ -196,6 +200,7 @@ TEST_CASE("supports widened where the input is sparse close a sphere sampled 4 x
 
 TEST_CASE("an evenly sampled input widens no support: the same output as one Delta for all") {
   PointSetResampling options;
+  options.widen_support = true;
   const PointSet<3> sphere = sample_sphere(Vec<3>(3.0, -2.0, 1.0), 1.0, 2000);
   const ResampledPointSet<3> widened = resample_point_set(sphere, options);
   options.widen_support = false;

@@ -9,6 +9,7 @@
 
 #include "core/geometry/sample_spacing.hpp"
 #include "core/resample/resample_policy.hpp"
+#include "core/surface/local_support.hpp"
 #include "core/util/parameter_ranges.hpp"
 #include "core/util/process_memory.hpp"
 
@@ -145,10 +146,13 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
   DeformingSurface<D> surface(grid, parameters, options.variant, options.threads);
   surface.set_points(std::move(points));
   SupportWidening widening;
-  for (const double radius : surface.surface().support_radii()) {
-    const double widest = radius / surface.surface().radius();
-    widening.widened_points += widest > 1.0 ? 1 : 0;
-    widening.widest = std::max(widening.widest, widest);
+  if (options.widen_support) {
+    ThreadPool pool(options.threads);
+    const double radius = surface.surface().radius();
+    for (const double widened : widened_support_radii<D>(input, radius, h, pool)) {
+      widening.widened_points += widened > radius ? 1 : 0;
+      widening.widest = std::max(widening.widest, widened / radius);
+    }
   }
   const StepStats stats = surface.resample_only();
   ResampledPointSet<D> out{surface.points(), grid, stats, widening, spacing_stats(surface.points(), h), Coverage{}};

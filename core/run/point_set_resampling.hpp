@@ -26,8 +26,10 @@ struct PointSetResampling {
   int grid = 0;          // N cells: h = 1/N for points within the unit box, else the bounding box's longest side / N
   // neither: h from the points' own spacing (core/geometry/sample_spacing.hpp)
   double radius_factor = 3.0;
-  // Each point's own support, wider where the input is sparse (AmlsParameters::widen_support).
-  bool widen_support = true;
+  // Each point's own support, wider where the input is sparse
+  // (AmlsParameters::widen_support): `amls resample` turns it on unless
+  // --uniform-support; off for callers whose own surface uses one Delta.
+  bool widen_support = false;
   Variant variant = Variant::exact;
   int threads = 1;
   double most_points = kMostResampledPoints;  // the cost limits (check_resampling_cost)

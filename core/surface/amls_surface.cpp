@@ -42,7 +42,7 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   support_radii_.clear();
   inverse_r2_.clear();
   wide_ids_.clear();
-  if (parameters_.widen_support) support_radii_ = widened_support_radii<D>(points_.positions, radius_, grid_.spacing());
+  supports_measured_ = false;
   index_.build(points_.positions, grid_.origin(), radius_, pool);
   pool.poll_cancel();  // the build's sort and the copy below are serial: a stop between them
   // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
@@ -51,26 +51,28 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   sorted.reserve(order.size());
   for (const std::uint32_t id : order) sorted.add(points_.positions[id], points_.normals[id]);
   points_ = std::move(sorted);
-  if (widened()) {
-    std::vector<double> radii(order.size());
-    inverse_r2_.resize(order.size());
-    std::vector<Vec<D>> wide_positions;
-    widest_ = radius_;
-    for (std::uint32_t k = 0; k < order.size(); ++k) {
-      radii[k] = support_radii_[order[k]];
-      inverse_r2_[k] = 1.0 / (radii[k] * radii[k]);
-      if (radii[k] > radius_) {
-        wide_ids_.push_back(k);
-        wide_positions.push_back(points_.positions[k]);
-        widest_ = std::max(widest_, radii[k]);
-      }
-    }
-    support_radii_ = std::move(radii);
-    wide_index_.build(wide_positions, grid_.origin(), widest_, pool);
-  }
   index_.renumber_in_cell_order();
   hashed_ = true;
   ready_ = false;
+}
+
+template <int D>
+void AmlsSurface<D>::widen_supports(ThreadPool& pool) {
+  support_radii_ = widened_support_radii<D>(points_.positions, radius_, grid_.spacing(), pool);
+  supports_measured_ = true;
+  if (!widened()) return;
+  inverse_r2_.resize(support_radii_.size());
+  std::vector<Vec<D>> wide_positions;
+  widest_ = radius_;
+  for (std::uint32_t k = 0; k < support_radii_.size(); ++k) {
+    inverse_r2_[k] = 1.0 / (support_radii_[k] * support_radii_[k]);
+    if (support_radii_[k] > radius_) {
+      wide_ids_.push_back(k);
+      wide_positions.push_back(points_.positions[k]);
+      widest_ = std::max(widest_, support_radii_[k]);
+    }
+  }
+  wide_index_.build(wide_positions, grid_.origin(), widest_, pool);
 }
 
 // How update_normals() measures neighbour j from point i: its offset in the
@@ -101,6 +103,8 @@ struct AmlsSurface<D>::WidenedSupport {
 template <int D>
 NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   if (!hashed_) hash_points(pool);
+  // The supports follow the points as hashed, once per hash.
+  if (parameters_.widen_support && !supports_measured_) widen_supports(pool);
   const std::size_t n = points_.size();
   pseudo_normals_.resize(n);
   std::vector<FitStatus> status(n);
@@ -238,7 +242,10 @@ void AmlsSurface<D>::select_with(std::span<const std::uint32_t> ids, const Vec<D
   out.positions.resize(ids.size());
   out.normals.resize(ids.size());
   out.offsets.resize(corrected ? ids.size() : 0);
-  out.inverse_r2.resize(kWidened ? ids.size() : 0);
+  if constexpr (kWidened)
+    out.inverse_r2.resize(ids.size());
+  else
+    out.inverse_r2.clear();
   const double r2 = radius * radius;
   std::size_t kept = 0;
   for (const std::uint32_t id : ids) {
@@ -257,7 +264,7 @@ void AmlsSurface<D>::select_with(std::span<const std::uint32_t> ids, const Vec<D
   out.positions.resize(kept);
   out.normals.resize(kept);
   out.offsets.resize(corrected ? kept : 0);
-  out.inverse_r2.resize(kWidened ? kept : 0);
+  if constexpr (kWidened) out.inverse_r2.resize(kept);
   Vec<D> sum = Vec<D>::Zero();
   for (const Vec<D>& n : out.normals) sum += n;
   // Every normal within 45 degrees of the sum s: n.s > |s| cos 45 degrees,
@@ -271,13 +278,14 @@ void AmlsSurface<D>::select_with(std::span<const std::uint32_t> ids, const Vec<D
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
-  return neighbourhood.inverse_r2.empty() ? evaluate_in_with<false>(neighbourhood, y)
-                                          : evaluate_in_with<true>(neighbourhood, y);
+  const GradientFit<D> fit =
+      neighbourhood.inverse_r2.empty() ? fit_in<false>(neighbourhood, y) : fit_in<true>(neighbourhood, y);
+  return fit.solve(parameters_.min_weight);
 }
 
 template <int D>
 template <bool kWidened>
-Evaluation<D> AmlsSurface<D>::evaluate_in_with(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
+GradientFit<D> AmlsSurface<D>::fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
   // (Widened: the support test below bounds the search.)
   const double r2 = kWidened ? std::numeric_limits<double>::infinity() : radius_ * radius_;
   const std::size_t n = neighbourhood.positions.size();
@@ -317,7 +325,7 @@ Evaluation<D> AmlsSurface<D>::evaluate_in_with(const Neighbourhood<D>& neighbour
     add_all([&](std::size_t k, const Vec<D>& d, double dd, double w) {
       fit.add(d, dd, neighbourhood.normals[k], w, neighbourhood.offsets[k]);
     });
-  return fit.solve(parameters_.min_weight);
+  return fit;
 }
 
 template <int D>

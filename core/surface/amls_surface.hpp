@@ -85,7 +85,7 @@ class AmlsSurface {
   const Grid<D>& grid() const { return grid_; }
   const AmlsParameters& parameters() const { return parameters_; }
   double radius() const { return radius_; }
-  // Whether some Delta_i exceeds Delta (AmlsParameters::widen_support), decided at hash_points().
+  // Whether some Delta_i exceeds Delta (AmlsParameters::widen_support), decided at update_normals().
   bool widened() const { return !support_radii_.empty(); }
   // Every point's Delta_i when widened(), else empty.
   const std::vector<double>& support_radii() const { return support_radii_; }
@@ -150,6 +150,8 @@ class AmlsSurface {
     return parameters_.orientation_filter && !neighbourhood.consistent;
   }
   void require_ready() const;
+  // Each point's Delta_i and the index of the widened points, for the points as hashed.
+  void widen_supports(ThreadPool& pool);
   // The supports' measure of a neighbour seen from a point (update_normals()).
   struct UniformSupport;
   struct WidenedSupport;
@@ -159,8 +161,9 @@ class AmlsSurface {
   void gather_widened(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const;
   template <bool kWidened>
   void select_with(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
+  // evaluate_in()'s sums, with one Delta or each point's own.
   template <bool kWidened>
-  Evaluation<D> evaluate_in_with(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
+  GradientFit<D> fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
   template <bool kCorrected, bool kWidened>
   void evaluate_cube_with(const Neighbourhood<D>& neighbourhood, const std::array<Vec<D>, kCubeCorners>& corners,
                           std::array<Evaluation<D>, kCubeCorners>& out) const;
@@ -179,6 +182,7 @@ class AmlsSurface {
   PointIndex<D> wide_index_;
   std::vector<std::uint32_t> wide_ids_;
   double widest_ = 0.0;
+  bool supports_measured_ = false;  // widen_supports() ran since the last hash
   PointIndex<D> index_;
   std::vector<Vec<D>> pseudo_normals_;
   std::vector<double> offsets_;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/geometry/kd_tree.hpp"
 #include "core/geometry/sample_spacing.hpp"
 
 namespace amls {
@@ -28,16 +29,28 @@ std::array<Vec<D>, D - 1> tangent_basis(const Vec<D>& n) {
 }  // namespace
 
 template <int D>
-std::vector<double> widened_support_radii(const std::vector<Vec<D>>& positions, double radius, double h) {
-  if (positions.size() <= static_cast<std::size_t>(kSpacingNeighbours)) return {};
-  std::vector<double> radii = kth_neighbour_distances<D>(positions, kSpacingNeighbours);
-  bool widened = false;
-  for (double& r : radii) {
-    const double own_spacing = r / kSpacingNeighbourDivisor;
-    r = radius * std::clamp(own_spacing / (kRegularSpread * h), 1.0, kMostWidening);
-    widened = widened || r > radius;
-  }
-  if (!widened) radii.clear();
+std::vector<double> widened_support_radii(const std::vector<Vec<D>>& positions, double radius, double h,
+                                          ThreadPool& pool) {
+  const std::size_t n = positions.size();
+  if (n <= static_cast<std::size_t>(kSpacingNeighbours)) return {};
+  KdTree<D> tree;
+  tree.build(positions);
+  std::vector<double> radii(n);
+  std::vector<unsigned char> wide(static_cast<std::size_t>(pool.threads()), 0);
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+    std::vector<std::uint32_t> ids;
+    std::vector<double> squared;
+    bool widened = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      // The point itself is among its k + 1 nearest (sample_spacing.hpp's rule).
+      tree.nearest(positions[i], static_cast<std::size_t>(kSpacingNeighbours) + 1, ids, squared);
+      const double own_spacing = std::sqrt(squared.back()) / kSpacingNeighbourDivisor;
+      radii[i] = radius * std::clamp(own_spacing / (kRegularSpread * h), 1.0, kMostWidening);
+      widened = widened || radii[i] > radius;
+    }
+    if (widened) wide[static_cast<std::size_t>(block)] = 1;
+  });
+  if (std::find(wide.begin(), wide.end(), 1) == wide.end()) radii.clear();
   return radii;
 }
 
@@ -69,8 +82,8 @@ void append_widened_walk_positions(const std::vector<Vec<D>>& positions, const s
   }
 }
 
-template std::vector<double> widened_support_radii<2>(const std::vector<Vec<2>>&, double, double);
-template std::vector<double> widened_support_radii<3>(const std::vector<Vec<3>>&, double, double);
+template std::vector<double> widened_support_radii<2>(const std::vector<Vec<2>>&, double, double, ThreadPool&);
+template std::vector<double> widened_support_radii<3>(const std::vector<Vec<3>>&, double, double, ThreadPool&);
 template void append_widened_walk_positions<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&,
                                                const std::vector<double>&, double, double, std::vector<Vec<2>>&);
 template void append_widened_walk_positions<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/math/vec.hpp"
+#include "core/util/thread_pool.hpp"
 
 namespace amls {
 
@@ -30,10 +31,12 @@ inline constexpr double kMostWidening = 4.0;
 inline constexpr double kWalkDisc = 0.6;
 
 // Every point's Delta_i for the support `radius` (Delta) on a grid of spacing
-// h, in the points' order; empty when every Delta_i equals Delta (regular
-// sampling, or at most kSpacingNeighbours points).
+// h, in the points' order, measured on `pool` (the same for any thread
+// count); empty when every Delta_i equals Delta (regular sampling, or at most
+// kSpacingNeighbours points).
 template <int D>
-std::vector<double> widened_support_radii(const std::vector<Vec<D>>& positions, double radius, double h);
+std::vector<double> widened_support_radii(const std::vector<Vec<D>>& positions, double radius, double h,
+                                          ThreadPool& pool);
 
 // Appends to `out` positions spaced 2h apart over the disc of kWalkDisc x
 // Delta_i in the tangent plane (normal `normals[i]`) of every point whose
@@ -45,8 +48,10 @@ void append_widened_walk_positions(const std::vector<Vec<D>>& positions, const s
                                    const std::vector<double>& radii, double radius, double h,
                                    std::vector<Vec<D>>& out);
 
-extern template std::vector<double> widened_support_radii<2>(const std::vector<Vec<2>>&, double, double);
-extern template std::vector<double> widened_support_radii<3>(const std::vector<Vec<3>>&, double, double);
+extern template std::vector<double> widened_support_radii<2>(const std::vector<Vec<2>>&, double, double,
+                                                             ThreadPool&);
+extern template std::vector<double> widened_support_radii<3>(const std::vector<Vec<3>>&, double, double,
+                                                             ThreadPool&);
 extern template void append_widened_walk_positions<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&,
                                                       const std::vector<double>&, double, double,
                                                       std::vector<Vec<2>>&);
