@@ -30,21 +30,8 @@ struct ResampleOptions {
   std::string variant = "exact";
   int dimension = 0;
   bool accept_loss = false;
+  bool uniform_support = false;
 };
-
-// The positions h is measured on and the cost estimated from: a point set's
-// points, a mesh's vertices; and the dimension they are in.
-struct InputPositions {
-  int dimension = 3;
-  std::vector<Vec<3>> positions;
-};
-
-InputPositions input_positions(const std::string& path, int dimension) {
-  if (is_mesh_file(path)) return {3, read_mesh(path).vertices};
-  LoadedPointSet loaded = read_point_set(path, dimension);
-  if (loaded.points.empty()) throw std::runtime_error(path + ": holds no points");
-  return {loaded.dimension, std::move(loaded.points.positions)};
-}
 
 // Chooses h, says why, and refuses an input whose resampling at h would be too large.
 template <int D>
@@ -84,6 +71,10 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
             << " points in -> " << result.points.size() << " points out, h = " << result.grid.spacing()
             << ", nearest-neighbour spacing min/median/max = " << result.spacing_h.min << " / "
             << result.spacing_h.median << " / " << result.spacing_h.max << " h, wrote " << options.output << "\n";
+  if (options.resampling.widen_support)
+    std::cout << "support: Delta = " << options.resampling.radius_factor << " h, widened at "
+              << result.widening.widened_points << " of " << input.size()
+              << " points where the input is sparse (up to " << result.widening.widest << " Delta)\n";
   if (!options.mesh.empty())
     std::cout << "mesh: "
               << export_surface_mesh(options.mesh, result.points, result.grid,
@@ -102,6 +93,9 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
     j["variant"] = to_string(options.resampling.variant);
     j["h"] = result.grid.spacing();
     j["radius_factor"] = options.resampling.radius_factor;
+    j["support"] = {{"widened", options.resampling.widen_support},
+                    {"widened_points", result.widening.widened_points},
+                    {"widest", result.widening.widest}};
     j["file_points"] = file_points;  // a mesh's vertices
     j["points_in"] = input.size();   // a mesh's samples
     j["points_out"] = result.points.size();
@@ -112,6 +106,9 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
                      {"output_on_input", c.output_fraction()},
                      {"input_uncovered_points", c.input_points - c.input_covered},
                      {"output_off_points", c.output_points - c.output_on_input},
+                     {"gap_reach", kGapReach},
+                     {"output_in_gaps", c.gap_fraction()},
+                     {"output_gap_points", c.output_in_gaps},
                      {"clear_loss", c.clear_loss()}};
     j["seconds"] = seconds;
     j["peak_memory_mib"] = memory;
@@ -122,8 +119,8 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
     if (!options.accept_loss)
       throw std::runtime_error(message + ". " + options.output +
                                " was written for inspection. Holes open where h is well below the input's spacing "
-                               "(without --spacing and --grid, h follows it) or where the input is sparse (a larger "
-                               "--radius-factor widens the support); --accept-loss takes this output as a success");
+                               "(without --spacing and --grid, h follows it) or where the input is sparser than the widened "
+                               "supports reach (a larger --radius-factor widens every support); --accept-loss takes this output as a success");
     std::cerr << "amls: warning: " << message << " (accepted: --accept-loss)\n";
   }
 }
@@ -158,6 +155,10 @@ void add_resample_command(CLI::App& app) {
       ->check(CLI::IsMember({2, 3}));
   cmd->add_option("--json", options->json_path,
                   "also write a report: h, point counts, spacing, coverage, time and peak memory");
+  cmd->add_flag(
+      "--uniform-support", options->uniform_support,
+      "one support Delta for every point, as the paper's tests use, instead of widening it where the input is "
+      "sparse (docs/real-data.md, \"Uneven density\")");
   cmd->add_flag("--accept-loss", options->accept_loss,
                 "exit 0 even when the output clearly misses part of the input (a warning is still printed)");
   add_radius_factor_option(*cmd, options->resampling.radius_factor);
@@ -166,27 +167,30 @@ void add_resample_command(CLI::App& app) {
   cmd->callback([options] {
     Stopwatch clock;
     options->resampling.variant = parse_variant(options->variant);
+    options->resampling.widen_support = !options->uniform_support;
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
     if (!options->mesh.empty()) mesh_format_from_extension(options->mesh);
-    // h first, from the raw input: meshes are sampled at h, and normals are estimated over Delta.
-    const InputPositions raw = input_positions(options->input, options->dimension);
+    // h first, from the file as read: meshes are sampled at h, and normals are estimated over Delta.
+    SurfaceInput raw = read_surface_input(options->input, options->dimension);
+    const std::size_t file_points = raw.positions().size();
+    const int dimension = raw.dimension();
     const double h =
-        raw.dimension == 2 ? spacing_for<2>(raw.positions, *options) : spacing_for<3>(raw.positions, *options);
+        dimension == 2 ? spacing_for<2>(raw.positions(), *options) : spacing_for<3>(raw.positions(), *options);
     options->resampling.spacing = h;
     options->resampling.grid = 0;
     SurfaceSampleOptions sampling;
     sampling.spacing = h;
     sampling.normal_radius = options->resampling.radius_factor * h;
-    sampling.dimension = raw.dimension;
+    sampling.dimension = dimension;
     sampling.threads = options->resampling.threads;
-    SurfaceSamples loaded = load_surface_samples(options->input, sampling);
+    SurfaceSamples loaded = surface_samples(std::move(raw), sampling);
     for (const std::string& warning : loaded.warnings) std::cerr << "amls: warning: " << warning << "\n";
     std::cout << options->input << ": " << loaded.source << "\n";
     if (loaded.dimension == 2) {
-      resample_and_write(to_2d(loaded.points), raw.positions.size(), *options, format, clock);
+      resample_and_write(to_2d(loaded.points), file_points, *options, format, clock);
     } else {
-      resample_and_write(loaded.points, raw.positions.size(), *options, format, clock);
+      resample_and_write(loaded.points, file_points, *options, format, clock);
     }
   });
 }

@@ -4,8 +4,9 @@
 On small generated 2D point sets (a circle of points with normals):
 - with no spacing option, h is the rule's and is printed with its reason, the
   coverage is printed and in the JSON, and the command exits 0;
-- a far sparse part lost at the dense part's h exits 1 naming the loss, and
-  --accept-loss exits 0 with a warning, writing the same file;
+- a far part 12 x sparser is closed by the widened supports; with
+  --uniform-support it is lost at the dense part's h, exits 1 naming the
+  loss, and --accept-loss exits 0 with a warning, writing the same file;
 - an h whose output would pass the point limit is refused before any work,
   naming a spacing that fits, and that spacing then runs.
 """
@@ -61,12 +62,19 @@ def main():
     with open(both, "w") as f:
         f.write("\n".join(circle(3.0, 3.0, 1.0, 400) + circle(9.0, 3.0, 0.3, 10)) + "\n")
     lost = os.path.join(work, "both_out.xyz")
+    # The small circle is 12 x sparser than the large one: its points' supports
+    # are widened (4 Delta) and close it.
     code, out, err = run(amls, both, "--dim", "2", "--out", lost)
+    if (code != 0 or "widened at 10 of 410 points" not in out
+            or "coverage: 100.00 % of the 410 input points covered" not in out):
+        fail(f"a sparse part: expected widened supports to close it, got {code}:\n{out}{err}")
+    # With one Delta for all it is lost.
+    code, out, err = run(amls, both, "--dim", "2", "--out", lost, "--uniform-support")
     if code != 1 or "the output misses part of the input: 10 of 410 input points" not in err:
         fail(f"a lost part: expected exit 1 naming 10 of 410 points, got {code}:\n{out}{err}")
     if not os.path.exists(lost):
         fail("a lost part: the output was not kept for inspection")
-    code, out, err = run(amls, both, "--dim", "2", "--out", lost, "--accept-loss")
+    code, out, err = run(amls, both, "--dim", "2", "--out", lost, "--uniform-support", "--accept-loss")
     if code != 0 or "(accepted: --accept-loss)" not in err:
         fail(f"--accept-loss: expected exit 0 with a warning, got {code}:\n{out}{err}")
 

@@ -8,7 +8,9 @@
 
 #include "core/run/point_set_resampling.hpp"
 #include "core/geometry/kd_tree.hpp"
+#include "core/geometry/sample_spacing.hpp"
 #include "core/geometry/shapes.hpp"
+#include "core/surface/local_support.hpp"
 
 using namespace amls;
 
@@ -129,4 +131,107 @@ TEST_CASE("a resampling whose output would be too large is refused before any gr
   options.memory_mib = 1.0;  // a machine of 2 MiB: about 500 points
   CHECK_THROWS_WITH_AS(check_resampling_cost(3, area, 0.05, options), doctest::Contains("GiB of memory"),
                        std::invalid_argument);
+}
+
+namespace {
+
+// A unit sphere sampled `dense` points' worth on its upper half and 4 x more
+// sparsely (16 x fewer points) on its lower half.
+PointSet<3> half_sparse_sphere(std::size_t dense) {
+  PointSet<3> points;
+  const PointSet<3> fine = sample_sphere(Vec<3>::Zero(), 1.0, dense);
+  const PointSet<3> coarse = sample_sphere(Vec<3>::Zero(), 1.0, dense / 16);
+  for (std::size_t i = 0; i < fine.size(); ++i)
+    if (fine.positions[i].z() > 0.0) points.add(fine.positions[i], fine.normals[i]);
+  for (std::size_t i = 0; i < coarse.size(); ++i)
+    if (coarse.positions[i].z() <= 0.0) points.add(coarse.positions[i], coarse.normals[i]);
+  return points;
+}
+
+// How many of `probes` directions (unit vectors) have no output point within
+// `reach` of the unit sphere's point there: holes.
+std::size_t probes_in_holes(const std::vector<Vec<3>>& output, const std::vector<Vec<3>>& probes, double reach) {
+  KdTree<3> tree;
+  tree.build(output);
+  std::vector<std::uint32_t> ids;
+  std::vector<double> squared;
+  std::size_t holes = 0;
+  for (const Vec<3>& p : probes) {
+    tree.nearest(p, 1, ids, squared);
+    holes += squared.front() > reach * reach ? 1 : 0;
+  }
+  return holes;
+}
+
+}  // namespace
+
+TEST_CASE("supports widened where the input is sparse close a sphere sampled 4 x more sparsely on one half") {
+  const PointSet<3> input = half_sparse_sphere(3000);
+  PointSetResampling options;
+  options.widen_support = true;
+  // The dense half's h: the rule over a sphere sampled densely all over.
+  options.spacing = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
+  const double h = options.spacing;
+  std::vector<Vec<3>> probes;
+  for (const Vec<3>& p : sample_sphere(Vec<3>::Zero(), 1.0, 2000).positions)
+    if (p.z() < -0.1) probes.push_back(p);
+
+  const ResampledPointSet<3> widened = resample_point_set(input, options);
+  CHECK(widened.widening.widened_points > 0);
+  CHECK(widened.widening.widest > 2.0);
+  CHECK(widened.widening.widest <= kMostWidening);
+  CHECK(probes_in_holes(widened.points.positions, probes, 1.5 * h) == 0);
+  CHECK(widened.coverage.gap_fraction() < 0.01);
+  CHECK_FALSE(widened.coverage.clear_loss());
+  double worst = 0.0;
+  for (const Vec<3>& p : widened.points.positions) worst = std::max(worst, std::abs(p.norm() - 1.0));
+  CHECK(worst < 0.5 * h);
+  options.threads = 2;  // the same points for any thread count
+  CHECK(resample_point_set(input, options).points.positions == widened.points.positions);
+
+  options.threads = 1;
+  options.widen_support = false;
+  const ResampledPointSet<3> uniform = resample_point_set(input, options);
+  CHECK(uniform.widening.widened_points == 0);
+  CHECK(probes_in_holes(uniform.points.positions, probes, 1.5 * h) > probes.size() / 4);
+  CHECK(uniform.coverage.input_fraction() < kLeastInputCovered);
+  CHECK(uniform.coverage.clear_loss());
+}
+
+TEST_CASE("an evenly sampled input widens no support: the same output as one Delta for all") {
+  PointSetResampling options;
+  options.widen_support = true;
+  const PointSet<3> sphere = sample_sphere(Vec<3>(3.0, -2.0, 1.0), 1.0, 2000);
+  const ResampledPointSet<3> widened = resample_point_set(sphere, options);
+  options.widen_support = false;
+  const ResampledPointSet<3> uniform = resample_point_set(sphere, options);
+  CHECK(widened.widening.widened_points == 0);
+  REQUIRE(widened.points.size() == uniform.points.size());
+  CHECK(widened.points.positions == uniform.points.positions);
+  CHECK(widened.points.normals == uniform.points.normals);
+}
+
+TEST_CASE("an output much finer than the input, torn between the input points, fails on its gaps alone") {
+  // 500 points on a sphere of radius 0.5 (spacing about 0.08) resampled at h = 0.01
+  // with Delta = 12 h, which spans the input's spacing: F is defined all
+  // over, but one Delta for all walks only h or so around each input point,
+  // so the output is a dotted sphere: near every input point, and every
+  // output point near one, yet torn everywhere between them.
+  const PointSet<3> sphere = sample_sphere(Vec<3>(2.0, 2.0, 2.0), 0.5, 500);
+  PointSetResampling options;
+  options.spacing = 0.01;
+  options.radius_factor = 12.0;
+  options.widen_support = false;
+  const ResampledPointSet<3> torn = resample_point_set(sphere, options);
+  CHECK(torn.coverage.input_fraction() >= kLeastInputCovered);
+  CHECK(torn.coverage.output_fraction() >= kLeastOutputOnInput);
+  CHECK(torn.coverage.gap_fraction() > 0.5);
+  CHECK(torn.coverage.clear_loss());
+  CHECK(torn.coverage.loss_message().find("the output is torn") != std::string::npos);
+
+  // Widened supports walk across the gaps and close it.
+  options.widen_support = true;
+  const ResampledPointSet<3> closed = resample_point_set(sphere, options);
+  CHECK(closed.coverage.gap_fraction() < 0.01);
+  CHECK_FALSE(closed.coverage.clear_loss());
 }

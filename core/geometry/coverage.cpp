@@ -18,8 +18,13 @@ double Coverage::output_fraction() const {
   return output_points == 0 ? 1.0 : static_cast<double>(output_on_input) / static_cast<double>(output_points);
 }
 
+double Coverage::gap_fraction() const {
+  return output_points == 0 ? 0.0 : static_cast<double>(output_in_gaps) / static_cast<double>(output_points);
+}
+
 bool Coverage::clear_loss() const {
-  return input_fraction() < kLeastInputCovered || output_fraction() < kLeastOutputOnInput;
+  return input_fraction() < kLeastInputCovered || output_fraction() < kLeastOutputOnInput ||
+         gap_fraction() > kMostOutputInGaps;
 }
 
 namespace {
@@ -36,7 +41,8 @@ std::string percent(double fraction) {
 
 std::string Coverage::summary() const {
   return percent(input_fraction()) + " of the " + std::to_string(input_points) + " input points covered, " +
-         percent(output_fraction()) + " of the " + std::to_string(output_points) + " output points on the input";
+         percent(output_fraction()) + " of the " + std::to_string(output_points) + " output points on the input, " +
+         percent(gap_fraction()) + " in gaps";
 }
 
 std::string Coverage::loss_message() const {
@@ -52,6 +58,12 @@ std::string Coverage::loss_message() const {
     out << output_points - output_on_input << " of " << output_points << " output points ("
         << percent(1.0 - output_fraction()) << ", more than " << percent(1.0 - kLeastOutputOnInput)
         << ") lie off the input, on a surface that is not there";
+  }
+  if (gap_fraction() > kMostOutputInGaps) {
+    if (out.tellp() > 0) out << "; ";
+    out << "the output is torn: " << output_in_gaps << " of " << output_points << " output points ("
+        << percent(gap_fraction()) << ", more than " << percent(kMostOutputInGaps)
+        << ") lie at the rim of a gap, with no output neighbours around them within " << kGapReach << " h";
   }
   return out.str();
 }

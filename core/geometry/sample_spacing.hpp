@@ -8,8 +8,9 @@
 // because scans are often dense along their scan lines and sparse across them:
 // the nearest neighbour then sees only the dense direction. The median makes h
 // independent of outliers and duplicates. Regions much sparser than the median
-// may still open holes: one global h cannot close them without losing the
-// dense regions' detail (docs/real-data.md, the radar scan).
+// would open holes at that h: one global h cannot close them without losing
+// the dense regions' detail, so `amls resample` widens the supports of their
+// points instead (core/surface/local_support.hpp; docs/real-data.md).
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -25,12 +25,26 @@ NormalEstimation estimate_in(PointSet<3>& points, double radius, int threads) {
 
 }  // namespace
 
-SurfaceSamples load_surface_samples(const std::string& path, const SurfaceSampleOptions& options) {
+SurfaceInput read_surface_input(const std::string& path, int dimension) {
+  SurfaceInput in;
+  in.path = path;
+  in.is_mesh = is_mesh_file(path);
+  if (in.is_mesh) {
+    if (dimension == 2) throw std::runtime_error(path + ": a triangle mesh is a 3D shape, not 2D");
+    in.mesh = read_mesh(path);
+    if (in.mesh.triangles.empty()) throw std::runtime_error(path + ": the mesh has no faces");
+    return in;
+  }
+  in.point_set = read_point_set(path, dimension);
+  if (in.point_set.points.empty()) throw std::runtime_error(path + ": holds no points");
+  return in;
+}
+
+SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options) {
+  const std::string& path = input.path;
   SurfaceSamples out;
-  if (is_mesh_file(path)) {
-    if (options.dimension == 2) throw std::runtime_error(path + ": a triangle mesh is a 3D shape, not 2D");
-    const TriangleMesh mesh = read_mesh(path);
-    if (mesh.triangles.empty()) throw std::runtime_error(path + ": the mesh has no faces");
+  if (input.is_mesh) {
+    const TriangleMesh& mesh = input.mesh;
     MeshSamples samples;
     try {
       samples = sample_mesh(mesh, options.spacing);
@@ -54,9 +68,8 @@ SurfaceSamples load_surface_samples(const std::string& path, const SurfaceSample
       out.warnings.push_back(path + ": the faces are wound clockwise seen from outside; normals were flipped outward");
     return out;
   }
-  LoadedPointSet loaded = read_point_set(path, options.dimension);
+  LoadedPointSet& loaded = input.point_set;
   out.warnings = std::move(loaded.warnings);
-  if (loaded.points.empty()) throw std::runtime_error(path + ": holds no points");
   out.dimension = loaded.dimension;
   out.points = std::move(loaded.points);
   if (loaded.has_normals) {
@@ -74,6 +87,10 @@ SurfaceSamples load_surface_samples(const std::string& path, const SurfaceSample
                " points without normals; normals estimated (Pratt fit, oriented over a neighbour graph)";
   for (const std::string& warning : report.warnings) out.warnings.push_back(path + ": " + warning);
   return out;
+}
+
+SurfaceSamples load_surface_samples(const std::string& path, const SurfaceSampleOptions& options) {
+  return surface_samples(read_surface_input(path, options.dimension), options);
 }
 
 }  // namespace amls

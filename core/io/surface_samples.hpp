@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
+#include "core/io/mesh_io.hpp"
+#include "core/io/point_set_io.hpp"
 
 namespace amls {
 
@@ -25,8 +27,29 @@ struct SurfaceSamples {
   std::vector<std::string> warnings;  // each names the file
 };
 
-// Throws std::runtime_error naming the file if it cannot be read or holds no
-// points (or no triangle of positive area), and for a mesh read as 2D.
+// A shape file as read, before it is sampled: a triangle mesh or a point set.
+struct SurfaceInput {
+  std::string path;
+  bool is_mesh = false;
+  TriangleMesh mesh;          // when is_mesh
+  LoadedPointSet point_set;   // otherwise
+  int dimension() const { return is_mesh ? 3 : point_set.dimension; }
+  // The positions a spacing is measured on: a mesh's vertices, a point set's points.
+  const std::vector<Vec<3>>& positions() const { return is_mesh ? mesh.vertices : point_set.points.positions; }
+};
+
+// Reads `path` (dimension: 0 decides from the file, 2 or 3 forces it).
+// Throws std::runtime_error naming the file if it cannot be read, holds no
+// points or is a mesh without faces, and for a mesh read as 2D.
+SurfaceInput read_surface_input(const std::string& path, int dimension);
+
+// The samples of a shape read by read_surface_input(), which it takes over
+// (options.dimension is the input's). Throws std::runtime_error naming the
+// file for a mesh with no triangle of positive area, or normals that cannot
+// be estimated.
+SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options);
+
+// read_surface_input() then surface_samples().
 SurfaceSamples load_surface_samples(const std::string& path, const SurfaceSampleOptions& options);
 
 }  // namespace amls

@@ -94,6 +94,26 @@ bool surrounded_within(std::span<const Neighbour> by_angle, double r2) {
   return count >= 3 && narrow(*previous, *first);
 }
 
+// 3D: sorts neighbours by their angle in the tangent plane.
+void sort_by_angle(std::vector<Neighbour>& neighbours) {
+  std::sort(neighbours.begin(), neighbours.end(),
+            [](const Neighbour& a, const Neighbour& b) { return a.order < b.order; });
+}
+
+// Whether `neighbours` surround the point (SamplingQuality::gap): 2D, one on
+// each side; 3D, no empty sector of 150 degrees (sorts them).
+template <int D>
+bool surrounded(std::vector<Neighbour>& neighbours) {
+  if constexpr (D == 2) {
+    bool plus = false, minus = false;
+    for (const Neighbour& nb : neighbours) (nb.x > 0.0 ? plus : minus) = true;
+    return plus && minus;
+  } else {
+    sort_by_angle(neighbours);
+    return surrounded_within(neighbours, kInfinity);
+  }
+}
+
 // The squared gap of one point (SamplingQuality::gap) when it exceeds
 // `largest` (the largest found so far), else `largest`: in 3D, a point already
 // surrounded within that distance cannot raise the maximum, and most are, so
@@ -110,8 +130,7 @@ double gap2_above(std::vector<Neighbour>& neighbours, std::vector<double>& dista
     }
     return std::max({plus, minus, largest});
   } else {
-    std::sort(neighbours.begin(), neighbours.end(),
-              [](const Neighbour& a, const Neighbour& b) { return a.order < b.order; });
+    sort_by_angle(neighbours);
     if (surrounded_within(neighbours, largest)) return largest;
     if (!surrounded_within(neighbours, kInfinity)) return kInfinity;
     // More neighbours only narrow the empty sectors: bisect over the distances.
@@ -131,37 +150,33 @@ double gap2_above(std::vector<Neighbour>& neighbours, std::vector<double>& dista
   }
 }
 
-struct PartialQuality {
-  double gap2 = 0.0;
-  double feature2 = kInfinity;
-};
-
-}  // namespace
-
-template <int D>
-SamplingQuality sampling_quality(const PointSet<D>& points, double h, double radius, ThreadPool& pool) {
-  SamplingQuality quality{0.0, kInfinity};
-  const std::size_t n = points.size();
-  if (n < 2) return quality;
-  const double r = radius * h;
+// Calls visit(result, neighbours, scratch, feature2) for every point, with its
+// same-sheet neighbours within r (in its tangent space), a scratch vector and the smallest
+// |p_i - p_j|^2 / |n_i - n_j|^2 among them (infinite when none turns), and
+// `result` the Result of i's block; returns every block's Result (one per
+// thread of `pool`), so that a reduction over them does not depend on how the
+// points were split.
+template <typename Result, int D, typename Visit>
+std::vector<Result> visit_neighbourhoods(const PointSet<D>& points, double r, ThreadPool& pool, const Result& start,
+                                         Visit&& visit) {
   const double r2 = r * r;
+  std::vector<Result> partial(static_cast<std::size_t>(pool.threads()), start);
   PointIndex<D> index;
   index.build(points.positions, Vec<D>::Zero(), r);
-  std::vector<PartialQuality> partial(static_cast<std::size_t>(pool.threads()));
   // Points in the index's cell order, so that consecutive points share their
   // candidate neighbours (every point of the 3^D cells around their cell).
   const std::vector<std::uint32_t>& order = index.order();
-  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int block) {
     // Accumulated in a local and stored once: the blocks' entries share a
     // cache line, and writing them per point would bounce it between cores.
-    PartialQuality result = partial[static_cast<std::size_t>(block)];
+    Result result = partial[static_cast<std::size_t>(block)];
     // The candidates' ids, positions and normals, side by side.
     std::vector<std::uint32_t> candidates;
     std::vector<Vec<D>> candidate_positions;
     std::vector<Vec<D>> candidate_normals;
     IVec<D> candidates_cell = IVec<D>::Zero();
     std::vector<Neighbour> neighbours;
-    std::vector<double> distances2;
+    std::vector<double> scratch;
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t i = order[k];
       const Vec<D>& p = points.positions[i];
@@ -180,19 +195,40 @@ SamplingQuality sampling_quality(const PointSet<D>& points, double h, double rad
       }
       const Eigen::Matrix<double, D - 1, D> basis = tangent_basis<D>(normal);
       neighbours.clear();
+      double feature2 = kInfinity;
       for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Vec<D> d = candidate_positions[c] - p;
         const double d2 = d.squaredNorm();
         const Vec<D>& other = candidate_normals[c];
         if (d2 > r2 || candidates[c] == i || other.dot(normal) <= kSameSheetCos) continue;
         const double turn2 = (other - normal).squaredNorm();
-        if (turn2 > 0.0) result.feature2 = std::min(result.feature2, d2 / turn2);
+        if (turn2 > 0.0) feature2 = std::min(feature2, d2 / turn2);
         if (const std::optional<Neighbour> nb = neighbour_at<D>(d, basis)) neighbours.push_back(*nb);
       }
-      result.gap2 = gap2_above<D>(neighbours, distances2, result.gap2);
+      visit(result, neighbours, scratch, feature2);
     }
     partial[static_cast<std::size_t>(block)] = result;
   });
+  return partial;
+}
+
+struct PartialQuality {
+  double gap2 = 0.0;
+  double feature2 = kInfinity;
+};
+
+}  // namespace
+
+template <int D>
+SamplingQuality sampling_quality(const PointSet<D>& points, double h, double radius, ThreadPool& pool) {
+  SamplingQuality quality{0.0, kInfinity};
+  if (points.size() < 2) return quality;
+  const std::vector<PartialQuality> partial = visit_neighbourhoods<PartialQuality>(
+      points, radius * h, pool, PartialQuality{},
+      [](PartialQuality& result, std::vector<Neighbour>& neighbours, std::vector<double>& scratch, double feature2) {
+        result.feature2 = std::min(result.feature2, feature2);
+        result.gap2 = gap2_above<D>(neighbours, scratch, result.gap2);
+      });
   for (const PartialQuality& p : partial) {
     quality.gap = std::max(quality.gap, p.gap2);
     quality.feature_size = std::min(quality.feature_size, p.feature2);
@@ -200,6 +236,19 @@ SamplingQuality sampling_quality(const PointSet<D>& points, double h, double rad
   quality.gap = std::sqrt(quality.gap) / h;
   quality.feature_size = std::sqrt(quality.feature_size) / h;
   return quality;
+}
+
+template <int D>
+std::size_t unsurrounded_points(const PointSet<D>& points, double h, double radius, ThreadPool& pool) {
+  if (points.size() < 2) return points.size();
+  const std::vector<std::size_t> partial = visit_neighbourhoods<std::size_t>(
+      points, radius * h, pool, std::size_t{0},
+      [](std::size_t& count, std::vector<Neighbour>& neighbours, std::vector<double>&, double) {
+        count += surrounded<D>(neighbours) ? 0 : 1;
+      });
+  std::size_t count = 0;
+  for (const std::size_t c : partial) count += c;
+  return count;
 }
 
 ResamplePolicy ResamplePolicy::parse(const std::string& text) {
@@ -260,6 +309,8 @@ bool ResamplePolicy::resample_now(std::size_t step, const PointSet<D>& points, d
 
 template SamplingQuality sampling_quality<2>(const PointSet<2>&, double, double, ThreadPool&);
 template SamplingQuality sampling_quality<3>(const PointSet<3>&, double, double, ThreadPool&);
+template std::size_t unsurrounded_points<2>(const PointSet<2>&, double, double, ThreadPool&);
+template std::size_t unsurrounded_points<3>(const PointSet<3>&, double, double, ThreadPool&);
 template bool ResamplePolicy::resample_now<2>(std::size_t, const PointSet<2>&, double, ThreadPool&) const;
 template bool ResamplePolicy::resample_now<3>(std::size_t, const PointSet<3>&, double, ThreadPool&) const;
 

@@ -64,6 +64,13 @@ struct SamplingQuality {
 template <int D>
 SamplingQuality sampling_quality(const PointSet<D>& points, double h, double radius, ThreadPool& pool);
 
+// How many of `points` (normals must be unit) are not surrounded, in the
+// sense of SamplingQuality::gap, by same-sheet neighbours within `radius`
+// (units of h): the rims of holes and of open surfaces, and isolated points.
+// All of them when fewer than 2.
+template <int D>
+std::size_t unsurrounded_points(const PointSet<D>& points, double h, double radius, ThreadPool& pool);
+
 // `local` resamples, after each deformation, only where the deformation has
 // strained the sampling since it was made (core/run/local_deforming_surface.hpp,
 // docs/local-resampling.md): a loop of its own, so resample_now() does not

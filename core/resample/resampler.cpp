@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/resample/segment_root.hpp"
+#include "core/surface/local_support.hpp"
 
 namespace amls {
 
@@ -68,7 +69,16 @@ Variant parse_variant(const std::string& name) {
 
 template <int D>
 void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
-  update_function(surface, surface.points().positions, pool);
+  if (!surface.widened()) {
+    update_function(surface, surface.points().positions, pool);
+    return;
+  }
+  // Widened supports carry the surface across gaps wider than a walk's
+  // block: walks over each sparse point's tangent disc reach its vertices.
+  std::vector<Vec<D>> walk_positions = surface.points().positions;
+  append_widened_walk_positions<D>(surface.points().positions, surface.pseudo_normals(), surface.support_radii(),
+                                   surface.radius(), surface.grid().spacing(), walk_positions);
+  update_function(surface, walk_positions, pool);
 }
 
 template <int D>
@@ -84,7 +94,8 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, const std::vec
 
   // One gather per brick serves its vertices here and, in locate_crossings(),
   // the root finding on every edge that starts in it: it holds every point
-  // within Delta of the brick's box of edges, [origin, origin + 4h]^D.
+  // within Delta (with widened supports: whose Delta_i reaches) of the
+  // brick's box of edges, [origin, origin + 4h]^D.
   values_.resize(field_.slots());
   const double h = grid.spacing();
   const double box_side = h * static_cast<double>(VertexField<D>::kBrickSide);
@@ -206,11 +217,12 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
   std::vector<std::size_t> fallbacks(evaluations.size(), 0);
 
   // Each crossing's root finding reads every point within Delta of its edge,
-  // i.e. within Delta + h/2 of the edge's midpoint. Crossings are listed brick
+  // i.e. within Delta + h/2 of the edge's midpoint (with widened supports:
+  // Delta_i). Crossings are listed brick
   // by brick, and a brick's crossings lie close together, so a selection made
   // with kReuseMargin to spare serves the following crossings of the brick
-  // whose midpoints are within that margin of its centre. The extra points
-  // are beyond Delta of every y on the edge: evaluate_in() weights them by
+  // whose midpoints are within that margin of its centre. The extra points'
+  // supports reach no y on the edge: evaluate_in() weights them by
   // exactly 0, so F's bits are those of a selection per crossing (and the
   // orientation filter keeps the same points: see Neighbourhood::consistent).
   const double reuse_margin = kReuseMargin * h;

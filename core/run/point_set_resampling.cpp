@@ -8,6 +8,8 @@
 #include <string>
 
 #include "core/geometry/sample_spacing.hpp"
+#include "core/resample/resample_policy.hpp"
+#include "core/surface/local_support.hpp"
 #include "core/util/parameter_ranges.hpp"
 #include "core/util/process_memory.hpp"
 
@@ -139,12 +141,26 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
   if (points.size() > static_cast<std::size_t>(kSpacingNeighbours))
     check_resampling_cost(D, sampled_extent(points.positions), h, options);
   const std::vector<Vec<D>> input = points.positions;
-  DeformingSurface<D> surface(grid, AmlsParameters{options.radius_factor}, options.variant, options.threads);
+  AmlsParameters parameters{options.radius_factor};
+  parameters.widen_support = options.widen_support;
+  DeformingSurface<D> surface(grid, parameters, options.variant, options.threads);
   surface.set_points(std::move(points));
+  SupportWidening widening;
+  if (options.widen_support) {
+    ThreadPool pool(options.threads);
+    const double radius = surface.surface().radius();
+    for (const double widened : widened_support_radii<D>(input, radius, h, pool)) {
+      widening.widened_points += widened > radius ? 1 : 0;
+      widening.widest = std::max(widening.widest, widened / radius);
+    }
+  }
   const StepStats stats = surface.resample_only();
-  ResampledPointSet<D> out{surface.points(), grid, stats, spacing_stats(surface.points(), h), Coverage{}};
-  if (input.size() > static_cast<std::size_t>(kSpacingNeighbours))
+  ResampledPointSet<D> out{surface.points(), grid, stats, widening, spacing_stats(surface.points(), h), Coverage{}};
+  if (input.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
     out.coverage = measure_coverage<D>(input, out.points.positions, h);
+    ThreadPool pool(options.threads);
+    out.coverage.output_in_gaps = unsurrounded_points(out.points, h, kGapReach, pool);
+  }
   return out;
 }
 

@@ -26,6 +26,10 @@ struct PointSetResampling {
   int grid = 0;          // N cells: h = 1/N for points within the unit box, else the bounding box's longest side / N
   // neither: h from the points' own spacing (core/geometry/sample_spacing.hpp)
   double radius_factor = 3.0;
+  // Each point's own support, wider where the input is sparse
+  // (AmlsParameters::widen_support): `amls resample` turns it on unless
+  // --uniform-support; off for callers whose own surface uses one Delta.
+  bool widen_support = false;
   Variant variant = Variant::exact;
   int threads = 1;
   double most_points = kMostResampledPoints;  // the cost limits (check_resampling_cost)
@@ -60,11 +64,18 @@ struct ResamplingCost {
 // estimate, the limit and the --spacing that would fit.
 ResamplingCost check_resampling_cost(int dimension, double extent, double h, const PointSetResampling& options);
 
+// How the supports were widened (AmlsParameters::widen_support) for the input.
+struct SupportWidening {
+  std::size_t widened_points = 0;  // input points whose Delta_i exceeds Delta
+  double widest = 1.0;             // the largest Delta_i / Delta
+};
+
 template <int D>
 struct ResampledPointSet {
   PointSet<D> points;
   Grid<D> grid;
   StepStats stats;
+  SupportWidening widening;
   SpacingStats spacing_h;  // nearest-neighbour spacing of the new points, in units of h
   Coverage coverage;       // of the input by the new points (core/geometry/coverage.hpp)
 };

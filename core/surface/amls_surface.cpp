@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "core/surface/local_support.hpp"
 #include "core/surface/surface_offsets.hpp"
 #include "core/math/weight.hpp"
 #include "core/util/parameter_ranges.hpp"
@@ -37,6 +39,10 @@ template <int D>
 void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   // Not hashed until the index is whole (the build can throw, or be cancelled).
   hashed_ = ready_ = false;
+  support_radii_.clear();
+  inverse_r2_.clear();
+  wide_ids_.clear();
+  supports_measured_ = false;
   index_.build(points_.positions, grid_.origin(), radius_, pool);
   pool.poll_cancel();  // the build's sort and the copy below are serial: a stop between them
   // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
@@ -51,18 +57,84 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
 }
 
 template <int D>
+void AmlsSurface<D>::widen_supports(ThreadPool& pool) {
+  support_radii_ = widened_support_radii<D>(points_.positions, radius_, grid_.spacing(), pool);
+  supports_measured_ = true;
+  if (!widened()) return;
+  inverse_r2_.resize(support_radii_.size());
+  std::vector<Vec<D>> wide_positions;
+  widest_ = radius_;
+  for (std::uint32_t k = 0; k < support_radii_.size(); ++k) {
+    inverse_r2_[k] = 1.0 / (support_radii_[k] * support_radii_[k]);
+    if (support_radii_[k] > radius_) {
+      wide_ids_.push_back(k);
+      wide_positions.push_back(points_.positions[k]);
+      widest_ = std::max(widest_, support_radii_[k]);
+    }
+  }
+  wide_index_.build(wide_positions, grid_.origin(), widest_, pool);
+}
+
+// How update_normals() measures neighbour j from point i: its offset in the
+// fit's coordinates (scaled by i's support, which keeps A well conditioned
+// and does not change the fitted normal) and |p_j - p_i|^2 / Delta_j^2, which
+// weighs it. One Delta for all, or each point's own.
+template <int D>
+struct AmlsSurface<D>::UniformSupport {
+  static constexpr bool kWidened = false;
+  double inverse_radius;
+  double measure(const Vec<D>& offset, std::uint32_t, std::size_t, Vec<D>& u) const {
+    u = offset * inverse_radius;
+    return u.squaredNorm();
+  }
+};
+
+template <int D>
+struct AmlsSurface<D>::WidenedSupport {
+  static constexpr bool kWidened = true;
+  const std::vector<double>& radii;
+  const std::vector<double>& inverse_r2;
+  double measure(const Vec<D>& offset, std::uint32_t j, std::size_t i, Vec<D>& u) const {
+    u = offset / radii[i];
+    return offset.squaredNorm() * inverse_r2[j];
+  }
+};
+
+template <int D>
 NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   if (!hashed_) hash_points(pool);
+  // The supports follow the points as hashed, once per hash.
+  if (parameters_.widen_support && !supports_measured_) widen_supports(pool);
   const std::size_t n = points_.size();
   pseudo_normals_.resize(n);
   std::vector<FitStatus> status(n);
-  const double inverse_radius = 1.0 / radius_;
-  const bool filter = parameters_.orientation_filter;
-  // The bias correction reads every point's neighbours within Delta again:
-  // listed here, where they are found anyway.
+  // The bias correction reads every point's neighbours again: listed by the
+  // fits, where they are found anyway.
   const bool list_neighbours = D == 3 && parameters_.bias_correction;
   if (list_neighbours) neighbours_.reset(n, pool.threads());
-  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+  if (widened())
+    fit_normals(WidenedSupport{support_radii_, inverse_r2_}, status, pool);
+  else
+    fit_normals(UniformSupport{1.0 / radius_}, status, pool);
+  NormalStats stats;
+  for (FitStatus s : status) stats.count(s);
+  offsets_.clear();
+  if constexpr (D == 3) {
+    if (list_neighbours)
+      offsets_ = surface_offsets<D>(points_.positions, pseudo_normals_, neighbours_,
+                                    {radius_, parameters_.min_weight, parameters_.orientation_filter, inverse_r2_},
+                                    pool);
+  }
+  ready_ = true;
+  return stats;
+}
+
+template <int D>
+template <typename Support>
+void AmlsSurface<D>::fit_normals(const Support& support, std::vector<FitStatus>& status, ThreadPool& pool) {
+  const bool filter = parameters_.orientation_filter;
+  const bool list_neighbours = D == 3 && parameters_.bias_correction;
+  pool.parallel_for(points_.size(), [&](std::size_t begin, std::size_t end, int block) {
     // Points are in cell order, so consecutive points share their candidate
     // neighbours: every point of the 3^D cells around their cell.
     std::vector<std::uint32_t> candidates;
@@ -78,16 +150,24 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
       if (!have_candidates || cell != candidates_cell) {
         have_candidates = true;
         candidates.clear();
-        index_.for_each_in_cells(cell.array() - 1, cell.array() + 1,
-                                 [&](std::uint32_t id, const Vec<D>&) { candidates.push_back(id); });
+        if constexpr (Support::kWidened) {
+          // Every point whose support reaches the cell.
+          const Vec<D> cell_lo = grid_.origin() + radius_ * cell.template cast<double>();
+          const Vec<D> cell_hi = cell_lo.array() + radius_;
+          index_.gather(cell_lo, cell_hi, radius_, candidates);
+          gather_widened(cell_lo, cell_hi, radius_, candidates);
+        } else {
+          index_.for_each_in_cells(cell.array() - 1, cell.array() + 1,
+                                   [&](std::uint32_t id, const Vec<D>&) { candidates.push_back(id); });
+        }
         candidates_cell = cell;
       }
       const Vec<D>& own = points_.normals[i];
       PrattFit<D>& fit = fits.start(i);
       std::vector<std::uint32_t>* listed = list_neighbours ? &neighbours_.start(i, block) : nullptr;
       for (const std::uint32_t id : candidates) {
-        const Vec<D> u = (points_.positions[id] - p) * inverse_radius;
-        const double s2 = u.squaredNorm();
+        Vec<D> u;
+        const double s2 = support.measure(points_.positions[id] - p, id, i, u);
         if (s2 > 1.0) continue;
         if (listed) listed->push_back(id);
         if (filter && !agrees(points_.normals[id], own)) continue;
@@ -97,16 +177,6 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     }
     fits.finish(end);
   });
-  NormalStats stats;
-  for (FitStatus s : status) stats.count(s);
-  offsets_.clear();
-  if constexpr (D == 3) {
-    if (list_neighbours)
-      offsets_ = surface_offsets<D>(points_.positions, pseudo_normals_, neighbours_,
-                                    {radius_, parameters_.min_weight, filter}, pool);
-  }
-  ready_ = true;
-  return stats;
 }
 
 template <int D>
@@ -131,11 +201,40 @@ void AmlsSurface<D>::gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radiu
                                 std::vector<std::uint32_t>& out) const {
   require_ready();
   index_.gather(lo, hi, radius, out);
+  if (widened()) gather_widened(lo, hi, radius, out);
+}
+
+template <int D>
+void AmlsSurface<D>::gather_widened(const Vec<D>& lo, const Vec<D>& hi, double radius,
+                                    std::vector<std::uint32_t>& out) const {
+  thread_local std::vector<std::uint32_t> wide;
+  wide.clear();
+  const double margin = radius - radius_;
+  wide_index_.gather(lo, hi, margin + widest_, wide);
+  const double r2 = radius * radius;
+  for (const std::uint32_t k : wide) {
+    const std::uint32_t id = wide_ids_[k];
+    const Vec<D>& q = points_.positions[id];
+    const double outside2 = (lo - q).cwiseMax(q - hi).cwiseMax(0.0).squaredNorm();
+    const double reach = margin + support_radii_[id];
+    // Those within `radius` are in `out` already.
+    if (outside2 > r2 && outside2 <= reach * reach) out.push_back(id);
+  }
 }
 
 template <int D>
 void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
                             Neighbourhood<D>& out) const {
+  if (widened())
+    select_with<true>(ids, x, radius, out);
+  else
+    select_with<false>(ids, x, radius, out);
+}
+
+template <int D>
+template <bool kWidened>
+void AmlsSurface<D>::select_with(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius,
+                                 Neighbourhood<D>& out) const {
   // Sized for every candidate, then cut to those kept: no capacity checks in
   // the loop. Every candidate is written and only those within reach kept: no
   // branch on the distance, which is hard to predict.
@@ -143,6 +242,10 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
   out.positions.resize(ids.size());
   out.normals.resize(ids.size());
   out.offsets.resize(corrected ? ids.size() : 0);
+  if constexpr (kWidened)
+    out.inverse_r2.resize(ids.size());
+  else
+    out.inverse_r2.clear();
   const double r2 = radius * radius;
   std::size_t kept = 0;
   for (const std::uint32_t id : ids) {
@@ -150,11 +253,18 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
     out.positions[kept] = q;
     out.normals[kept] = pseudo_normals_[id];
     if (corrected) out.offsets[kept] = offsets_[id];
-    kept += (q - x).squaredNorm() > r2 ? 0 : 1;
+    if constexpr (kWidened) {
+      out.inverse_r2[kept] = inverse_r2_[id];
+      const double reach = radius - radius_ + support_radii_[id];
+      kept += (q - x).squaredNorm() > reach * reach ? 0 : 1;
+    } else {
+      kept += (q - x).squaredNorm() > r2 ? 0 : 1;
+    }
   }
   out.positions.resize(kept);
   out.normals.resize(kept);
   out.offsets.resize(corrected ? kept : 0);
+  if constexpr (kWidened) out.inverse_r2.resize(kept);
   Vec<D> sum = Vec<D>::Zero();
   for (const Vec<D>& n : out.normals) sum += n;
   // Every normal within 45 degrees of the sum s: n.s > |s| cos 45 degrees,
@@ -168,20 +278,30 @@ void AmlsSurface<D>::select(std::span<const std::uint32_t> ids, const Vec<D>& x,
 
 template <int D>
 Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
-  const double r2 = radius_ * radius_;
+  const GradientFit<D> fit =
+      neighbourhood.inverse_r2.empty() ? fit_in<false>(neighbourhood, y) : fit_in<true>(neighbourhood, y);
+  return fit.solve(parameters_.min_weight);
+}
+
+template <int D>
+template <bool kWidened>
+GradientFit<D> AmlsSurface<D>::fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const {
+  // (Widened: the support test below bounds the search.)
+  const double r2 = kWidened ? std::numeric_limits<double>::infinity() : radius_ * radius_;
   const std::size_t n = neighbourhood.positions.size();
   const bool filter = filters(neighbourhood);
-  // The orientation reference: the pseudo-normal of the point nearest to y.
-  // (Recomputing distances in the second pass is cheaper than storing them.)
-  // Tracked by index with selects, not branches: which neighbour is nearer
-  // than the ones before it is unpredictable.
+  // The orientation reference: the pseudo-normal of the nearest point whose
+  // support reaches y. (Recomputing distances in the second pass is cheaper
+  // than storing them.) Tracked by index with selects, not branches: which
+  // neighbour is nearer than the ones before it is unpredictable.
   Vec<D> reference = Vec<D>::Zero();
   if (filter) {
     double nearest = r2;
     std::size_t nearest_k = n;
     for (std::size_t k = 0; k < n; ++k) {
       const double d2 = (neighbourhood.positions[k] - y).squaredNorm();
-      const bool nearer = d2 < nearest;
+      bool nearer = d2 < nearest;
+      if constexpr (kWidened) nearer = nearer & (d2 * neighbourhood.inverse_r2[k] < 1.0);
       nearest = nearer ? d2 : nearest;
       nearest_k = nearer ? k : nearest_k;
     }
@@ -189,13 +309,14 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
   }
   const double inverse_r2 = 1.0 / r2;
   GradientFit<D> fit;
-  // Branch-free: a neighbour beyond Delta or filtered out adds with weight 0.
+  // Branch-free: a neighbour beyond its support or filtered out adds with weight 0.
   auto add_all = [&](auto&& add) {
     for (std::size_t k = 0; k < n; ++k) {
       const Vec<D> d = neighbourhood.positions[k] - y;
       const double dd = d.squaredNorm();
       const bool kept = !filter || agrees(neighbourhood.normals[k], reference);
-      add(k, d, dd, weight_of_squared_ratio(dd * inverse_r2) * static_cast<double>(kept));
+      const double s2 = dd * (kWidened ? neighbourhood.inverse_r2[k] : inverse_r2);
+      add(k, d, dd, weight_of_squared_ratio(s2) * static_cast<double>(kept));
     }
   };
   if (neighbourhood.offsets.empty())
@@ -204,7 +325,7 @@ Evaluation<D> AmlsSurface<D>::evaluate_in(const Neighbourhood<D>& neighbourhood,
     add_all([&](std::size_t k, const Vec<D>& d, double dd, double w) {
       fit.add(d, dd, neighbourhood.normals[k], w, neighbourhood.offsets[k]);
     });
-  return fit.solve(parameters_.min_weight);
+  return fit;
 }
 
 template <int D>
@@ -214,15 +335,20 @@ void AmlsSurface<D>::evaluate_cube(const Neighbourhood<D>& neighbourhood,
   if (filters(neighbourhood)) {
     // Each corner has its own orientation reference: one at a time.
     for (int v = 0; v < kCubeCorners; ++v) out[v] = evaluate_in(neighbourhood, corners[v]);
+  } else if (!neighbourhood.inverse_r2.empty()) {
+    if (neighbourhood.offsets.empty())
+      evaluate_cube_with<false, true>(neighbourhood, corners, out);
+    else
+      evaluate_cube_with<true, true>(neighbourhood, corners, out);
   } else if (neighbourhood.offsets.empty()) {
-    evaluate_cube_with<false>(neighbourhood, corners, out);
+    evaluate_cube_with<false, false>(neighbourhood, corners, out);
   } else {
-    evaluate_cube_with<true>(neighbourhood, corners, out);
+    evaluate_cube_with<true, false>(neighbourhood, corners, out);
   }
 }
 
 template <int D>
-template <bool kCorrected>
+template <bool kCorrected, bool kWidened>
 void AmlsSurface<D>::evaluate_cube_with(const Neighbourhood<D>& neighbourhood,
                                         const std::array<Vec<D>, kCubeCorners>& corners,
                                         std::array<Evaluation<D>, kCubeCorners>& out) const {
@@ -255,7 +381,8 @@ void AmlsSurface<D>::evaluate_cube_with(const Neighbourhood<D>& neighbourhood,
     for (int v = 0; v < V; ++v) dd[v] = qq + yy[v];
     for (int a = 0; a < D; ++a)
       for (int v = 0; v < V; ++v) dd[v] -= 2.0 * q[a] * y[a][v];
-    for (int v = 0; v < V; ++v) s2[v] = dd[v] * inverse_r2;
+    const double inverse_r2_k = kWidened ? neighbourhood.inverse_r2[k] : inverse_r2;
+    for (int v = 0; v < V; ++v) s2[v] = dd[v] * inverse_r2_k;
     weights_of_squared_ratios(s2, w);
     for (int v = 0; v < V; ++v) {
       sum_w[v] += w[v];

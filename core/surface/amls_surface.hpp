@@ -39,6 +39,11 @@ struct AmlsParameters {
   // (core/surface/surface_offsets.hpp; its effect on the Enright test:
   // docs/design.md). Ignored in 2D, which has no such bias.
   bool bias_correction = true;
+  // Each point gets its own support Delta_i, wider than Delta where its
+  // neighbours are far (core/surface/local_support.hpp), so that sparse parts
+  // of an unevenly sampled input stay closed. Off for the paper's tests; where
+  // every Delta_i equals Delta the surface is the same as without it.
+  bool widen_support = false;
 };
 
 // Positions and pseudo-normals of the points near a region, copied side by side
@@ -49,6 +54,8 @@ struct Neighbourhood {
   std::vector<Vec<D>> normals;
   // The points' offsets (AmlsParameters::bias_correction); empty: no correction.
   std::vector<double> offsets;
+  // The points' 1 / Delta_i^2 (AmlsParameters::widen_support); empty: all 1 / Delta^2.
+  std::vector<double> inverse_r2;
   // Every pair of normals agrees (all lie within 45 degrees of their mean), so
   // the orientation filter would keep every point and can be skipped.
   bool consistent = false;
@@ -78,6 +85,10 @@ class AmlsSurface {
   const Grid<D>& grid() const { return grid_; }
   const AmlsParameters& parameters() const { return parameters_; }
   double radius() const { return radius_; }
+  // Whether some Delta_i exceeds Delta (AmlsParameters::widen_support), decided at update_normals().
+  bool widened() const { return !support_radii_.empty(); }
+  // Every point's Delta_i when widened(), else empty.
+  const std::vector<double>& support_radii() const { return support_radii_; }
 
   const PointSet<D>& points() const { return points_; }
   // Moving the points invalidates the index and the pseudo-normals until the
@@ -103,14 +114,17 @@ class AmlsSurface {
   // evaluate_cube() fits over it. The resampler gathers once per brick and
   // selects once per cube; evaluate() does all three for one position.
 
-  // F(x) and the fit's gradient, over all points within Delta of x.
+  // F(x) and the fit's gradient, over all points whose support reaches x.
   Evaluation<D> evaluate(const Vec<D>& x) const;
 
-  // Appends the ids of the points within `radius` of the box [lo, hi].
+  // Appends the ids of the points within `radius` of the box [lo, hi]. With
+  // widened supports `radius` is Delta plus a margin, and a point counts
+  // when its own Delta_i plus that margin reaches the box.
   void gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const;
-  // Fills `out` with those of the points `ids` that lie within `radius` of x.
+  // Fills `out` with those of the points `ids` that lie within `radius` of x
+  // (widened: within Delta_i + radius - Delta, with their 1 / Delta_i^2).
   void select(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
-  // F at y from a neighbourhood holding every point within Delta of y.
+  // F at y from a neighbourhood holding every point whose support reaches y.
   Evaluation<D> evaluate_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
   // F at the 2^D corners of a grid cube, all from one neighbourhood holding
   // every point within Delta of each of them: one pass over the neighbours
@@ -136,7 +150,21 @@ class AmlsSurface {
     return parameters_.orientation_filter && !neighbourhood.consistent;
   }
   void require_ready() const;
-  template <bool kCorrected>
+  // Each point's Delta_i and the index of the widened points, for the points as hashed.
+  void widen_supports(ThreadPool& pool);
+  // The supports' measure of a neighbour seen from a point (update_normals()).
+  struct UniformSupport;
+  struct WidenedSupport;
+  template <typename Support>
+  void fit_normals(const Support& support, std::vector<FitStatus>& status, ThreadPool& pool);
+  // gather_ids()' second part when widened(): the widened points beyond `radius` whose own support reaches.
+  void gather_widened(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const;
+  template <bool kWidened>
+  void select_with(std::span<const std::uint32_t> ids, const Vec<D>& x, double radius, Neighbourhood<D>& out) const;
+  // evaluate_in()'s sums, with one Delta or each point's own.
+  template <bool kWidened>
+  GradientFit<D> fit_in(const Neighbourhood<D>& neighbourhood, const Vec<D>& y) const;
+  template <bool kCorrected, bool kWidened>
   void evaluate_cube_with(const Neighbourhood<D>& neighbourhood, const std::array<Vec<D>, kCubeCorners>& corners,
                           std::array<Evaluation<D>, kCubeCorners>& out) const;
 
@@ -144,6 +172,17 @@ class AmlsSurface {
   AmlsParameters parameters_;
   double radius_;
   PointSet<D> points_;
+  // Delta_i and 1 / Delta_i^2 of every point, in the points' order, when
+  // some Delta_i exceeds Delta; else empty (one Delta for all).
+  std::vector<double> support_radii_;
+  std::vector<double> inverse_r2_;
+  // The points whose Delta_i exceeds Delta, in cells as wide as the widest
+  // (index_ keeps cells of Delta for all, so that the many regular points'
+  // queries stay as small as without widening), and their ids.
+  PointIndex<D> wide_index_;
+  std::vector<std::uint32_t> wide_ids_;
+  double widest_ = 0.0;
+  bool supports_measured_ = false;  // widen_supports() ran since the last hash
   PointIndex<D> index_;
   std::vector<Vec<D>> pseudo_normals_;
   std::vector<double> offsets_;

@@ -8,12 +8,16 @@
 
 namespace amls {
 
-template <int D>
-std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
+namespace {
+
+// surface_offsets() with `inverse_r2_of(id)` the 1 / Delta^2 neighbour id
+// weighs by and `limiter_r2_of(i)` the squared radius of point i's limiter:
+// constants for one Delta, each point's own when widened.
+template <int D, typename InverseR2, typename LimiterR2>
+std::vector<double> limited_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
                                     const IdLists& neighbours, const SurfaceOffsetOptions& options,
-                                    ThreadPool& pool) {
+                                    InverseR2 inverse_r2_of, LimiterR2 limiter_r2_of, ThreadPool& pool) {
   const std::size_t n = positions.size();
-  const double inverse_r2 = 1.0 / (options.radius * options.radius);
   const bool filter = options.orientation_filter;
   // Whether neighbour `id` of point i is on i's side.
   auto same_side = [&](std::size_t i, std::uint32_t id) { return !filter || normals[id].dot(normals[i]) > 0.0; };
@@ -28,7 +32,7 @@ std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const 
         if (!same_side(i, id)) continue;
         const Vec<D> d = positions[id] - positions[i];
         const double dd = d.squaredNorm();
-        fit.add(d, dd, normals[id], weight_of_squared_ratio(dd * inverse_r2));
+        fit.add(d, dd, normals[id], weight_of_squared_ratio(dd * inverse_r2_of(id)));
       }
       const Evaluation<D> e = fit.solve(options.min_weight);
       raw[i] = e.defined ? e.value : 0.0;
@@ -42,7 +46,7 @@ std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const 
       double sum_w = 0.0, sum_o = 0.0;
       for (const std::uint32_t id : neighbours.of(i)) {
         if (!same_side(i, id)) continue;
-        const double w = weight_of_squared_ratio((positions[id] - positions[i]).squaredNorm() * inverse_r2);
+        const double w = weight_of_squared_ratio((positions[id] - positions[i]).squaredNorm() * inverse_r2_of(id));
         sum_w += w;
         sum_o += w * raw[id];
       }
@@ -52,9 +56,9 @@ std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const 
 
   // 3. Limited: minmod over the smoothed offsets within Delta / 2.
   std::vector<double> limited(n, 0.0);
-  const double limiter_r2 = 0.25 * options.radius * options.radius;
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t i = begin; i < end; ++i) {
+      const double limiter_r2 = limiter_r2_of(i);
       double o = smoothed[i];
       for (const std::uint32_t id : neighbours.of(i)) {
         if (!same_side(i, id) || (positions[id] - positions[i]).squaredNorm() > limiter_r2) continue;
@@ -69,6 +73,25 @@ std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const 
     }
   });
   return limited;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
+                                    const IdLists& neighbours, const SurfaceOffsetOptions& options,
+                                    ThreadPool& pool) {
+  if (!options.inverse_r2.empty()) {
+    const std::span<const double> inverse_r2 = options.inverse_r2;
+    return limited_offsets<D>(
+        positions, normals, neighbours, options, [inverse_r2](std::uint32_t id) { return inverse_r2[id]; },
+        [inverse_r2](std::size_t i) { return 0.25 / inverse_r2[i]; }, pool);
+  }
+  const double inverse_r2 = 1.0 / (options.radius * options.radius);
+  const double limiter_r2 = 0.25 * options.radius * options.radius;
+  return limited_offsets<D>(
+      positions, normals, neighbours, options, [inverse_r2](std::uint32_t) { return inverse_r2; },
+      [limiter_r2](std::size_t) { return limiter_r2; }, pool);
 }
 
 template std::vector<double> surface_offsets<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,

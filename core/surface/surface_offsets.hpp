@@ -34,6 +34,7 @@
 // also makes the correction partial: a static torus of tube radius 2h grows
 // 0.14 % per resample instead of 0.57 % without it, where raw offsets would
 // give 0.017 %.)
+#include <span>
 #include <vector>
 
 #include "core/util/id_lists.hpp"
@@ -46,11 +47,16 @@ struct SurfaceOffsetOptions {
   double radius = 0.0;             // Delta
   double min_weight = 0.0;         // F is undefined below it: offset 0
   bool orientation_filter = true;  // neighbours count only if their normal agrees (AmlsParameters)
+  // Every point's 1 / Delta_i^2 when supports are widened (AmlsParameters::widen_support):
+  // a neighbour then weighs by its own support, and the limiter looks within Delta_i / 2.
+  // Empty: Delta for all.
+  std::span<const double> inverse_r2 = {};
 };
 
 // The limited offsets o_i of the points `positions` with pseudo-normals
 // `normals`; `neighbours` holds, for each point, every point within Delta of
-// it (itself included) in a fixed order. The same for any thread count.
+// it (itself included; with widened supports, every point whose support
+// reaches it) in a fixed order. The same for any thread count.
 template <int D>
 std::vector<double> surface_offsets(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
                                     const IdLists& neighbours, const SurfaceOffsetOptions& options,
