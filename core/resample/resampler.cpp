@@ -77,7 +77,7 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& po
   // block: walks over each sparse point's tangent disc reach its vertices.
   std::vector<Vec<D>> walk_positions = surface.points().positions;
   append_widened_walk_positions<D>(surface.points().positions, surface.pseudo_normals(), surface.support_radii(),
-                                   surface.radius(), surface.grid().spacing(), walk_positions);
+                                   surface.radius(), surface.grid().spacing(), walk_positions, pool);
   update_function(surface, walk_positions, pool);
 }
 

@@ -57,36 +57,55 @@ std::vector<double> widened_support_radii(const std::vector<Vec<D>>& positions, 
 template <int D>
 void append_widened_walk_positions(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
                                    const std::vector<double>& radii, double radius, double h,
-                                   std::vector<Vec<D>>& out) {
+                                   std::vector<Vec<D>>& out, ThreadPool& pool) {
   const double step = 2.0 * h;
-  for (std::size_t i = 0; i < radii.size(); ++i) {
-    if (!(radii[i] > radius)) continue;
+  // Calls visit(offset) for every offset of point i's disc: every k in
+  // [-steps, steps]^(D-1) whose position lies within the disc, widened by a
+  // step so that the walks' blocks reach its rim.
+  const auto for_each_offset = [&](std::size_t i, auto&& visit) {
+    if (!(radii[i] > radius)) return;
     const double norm = normals[i].norm();
-    if (!(norm > 0.0)) continue;
+    if (!(norm > 0.0)) return;
     const std::array<Vec<D>, D - 1> basis = tangent_basis<D>(Vec<D>(normals[i] / norm));
     const double disc = kWalkDisc * radii[i];
     const int steps = static_cast<int>(std::ceil(disc / step));
     const double disc2 = (disc + step) * (disc + step);
     IVec<D - 1> k = IVec<D - 1>::Constant(-steps);
-    // Every k in [-steps, steps]^(D-1) whose position lies within the disc,
-    // widened by a step so that the walks' blocks reach its rim.
     for (;;) {
       Vec<D> offset = Vec<D>::Zero();
       for (int a = 0; a < D - 1; ++a) offset += (step * static_cast<double>(k[a])) * basis[static_cast<std::size_t>(a)];
-      if (!k.isZero() && offset.squaredNorm() <= disc2) out.push_back(positions[i] + offset);
+      if (!k.isZero() && offset.squaredNorm() <= disc2) visit(offset);
       int a = 0;
       while (a < D - 1 && k[a] == steps) k[a++] = -steps;
       if (a == D - 1) break;
       ++k[a];
     }
-  }
+  };
+  // A disc can hold a thousand positions and every point can be widened (a
+  // grid far finer than the input): counted first and written in place, on the
+  // pool, so that no reallocation copies the list while Ctrl+C waits.
+  std::vector<std::size_t> first(radii.size() + 1, 0);
+  pool.parallel_for(radii.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t i = begin; i < end; ++i) for_each_offset(i, [&](const Vec<D>&) { ++first[i + 1]; });
+  });
+  for (std::size_t i = 0; i < radii.size(); ++i) first[i + 1] += first[i];
+  const std::size_t start = out.size();
+  out.resize(start + first.back());
+  pool.parallel_for(radii.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t i = begin; i < end; ++i) {
+      std::size_t slot = start + first[i];
+      for_each_offset(i, [&](const Vec<D>& offset) { out[slot++] = positions[i] + offset; });
+    }
+  });
 }
 
 template std::vector<double> widened_support_radii<2>(const std::vector<Vec<2>>&, double, double, ThreadPool&);
 template std::vector<double> widened_support_radii<3>(const std::vector<Vec<3>>&, double, double, ThreadPool&);
 template void append_widened_walk_positions<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&,
-                                               const std::vector<double>&, double, double, std::vector<Vec<2>>&);
+                                               const std::vector<double>&, double, double, std::vector<Vec<2>>&,
+                                               ThreadPool&);
 template void append_widened_walk_positions<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,
-                                               const std::vector<double>&, double, double, std::vector<Vec<3>>&);
+                                               const std::vector<double>&, double, double, std::vector<Vec<3>>&,
+                                               ThreadPool&);
 
 }  // namespace amls

@@ -46,7 +46,7 @@ std::vector<double> widened_support_radii(const std::vector<Vec<D>>& positions, 
 template <int D>
 void append_widened_walk_positions(const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
                                    const std::vector<double>& radii, double radius, double h,
-                                   std::vector<Vec<D>>& out);
+                                   std::vector<Vec<D>>& out, ThreadPool& pool);
 
 extern template std::vector<double> widened_support_radii<2>(const std::vector<Vec<2>>&, double, double,
                                                              ThreadPool&);
@@ -54,9 +54,9 @@ extern template std::vector<double> widened_support_radii<3>(const std::vector<V
                                                              ThreadPool&);
 extern template void append_widened_walk_positions<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&,
                                                       const std::vector<double>&, double, double,
-                                                      std::vector<Vec<2>>&);
+                                                      std::vector<Vec<2>>&, ThreadPool&);
 extern template void append_widened_walk_positions<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&,
                                                       const std::vector<double>&, double, double,
-                                                      std::vector<Vec<3>>&);
+                                                      std::vector<Vec<3>>&, ThreadPool&);
 
 }  // namespace amls
