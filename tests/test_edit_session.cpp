@@ -43,6 +43,25 @@ void drag_right_handle(EditSession<2>& session, double x, int moves) {
   }
 }
 
+// Runs the step to `to` with a control that says stop from its k-th poll on,
+// for k = 1, 2, ... until the step gets through: so it is stopped before each
+// phase and at every poll inside one. Calls after_stop() after each stopped
+// try and counts them in `stops`; returns the step that got through.
+template <typename AfterStop>
+EditResult stop_at_every_poll(EditSession<2>& session, const std::vector<Vec<2>>& to, int& stops,
+                              AfterStop&& after_stop) {
+  std::atomic<int> polls{0};
+  int stop_at = 0;
+  const WorkControl control{[&] { return ++polls >= stop_at; }, {}};
+  for (stop_at = 1;; ++stop_at) {
+    polls = 0;
+    const EditResult result = session.move_handles(to, control);
+    if (!result.cancelled) return result;
+    ++stops;
+    after_stop(result);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("dragging one handle of two stretches the circle towards it and keeps the other end") {
@@ -114,26 +133,15 @@ TEST_CASE("a step stopped anywhere inside its phases leaves the session as befor
     EditSession<2> session = circle_with_two_handles(threads);
     const PointSet<2> start = session.points();
     session.evaluable_surface();  // pseudo-normals of the start, as the 2D curve has them before a step
-    // From the k-th poll on the control says stop, for k = 1, 2, ... until the
-    // step gets through: so it is stopped before each phase and at every poll
-    // inside one, in every loop of every phase.
-    std::atomic<int> polls{0};
-    int stop_at = 0;
-    const WorkControl control{[&] { return ++polls >= stop_at; }, {}};
-    EditResult result;
     int stops = 0;
-    for (stop_at = 1;; ++stop_at) {
-      polls = 0;
-      result = session.move_handles(to, control);
-      if (!result.cancelled) break;
-      ++stops;
-      CHECK(!result.changed);
+    const EditResult result = stop_at_every_poll(session, to, stops, [&](const EditResult& stopped) {
+      CHECK(!stopped.changed);
       CHECK(session.points().positions == start.positions);
       CHECK(session.points().normals == start.normals);
       CHECK(session.handles()[1].x() == 1.0);
       CHECK(session.recording().steps().empty());
       CHECK(session.evaluable_surface().evaluate(Vec<2>(1.0, 0.0)).defined);
-    }
+    });
     // Only three polls come before a phase (resample, deform, resample): the other stops were inside one.
     CHECK(stops > 3);
     CHECK(result.stepped);
@@ -386,19 +394,11 @@ TEST_CASE("under local a step stopped inside its phase leaves the session as bef
   to[1].x() = 1.3;
   REQUIRE(reference.move_handles(to, kRunAll).stepped);
   const PointSet<2> start = session.points();
-  std::atomic<int> polls{0};
-  int stop_at = 0;
-  const WorkControl control{[&] { return ++polls >= stop_at; }, {}};
-  EditResult result;
   int stops = 0;
-  for (stop_at = 1;; ++stop_at) {
-    polls = 0;
-    result = session.move_handles(to, control);
-    if (!result.cancelled) break;
-    ++stops;
+  const EditResult result = stop_at_every_poll(session, to, stops, [&](const EditResult&) {
     CHECK(session.points().positions == start.positions);
     CHECK(session.recording().steps().size() == 1);
-  }
+  });
   CHECK(stops > 1);  // one poll comes before the phase: the others were inside it
   CHECK(result.stepped);
   CHECK(session.points().positions == reference.points().positions);

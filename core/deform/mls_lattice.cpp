@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/deform/strain_lattice.hpp"
 #include "core/geometry/grid.hpp"
 
 namespace amls {
@@ -75,13 +76,6 @@ struct Box {
   }
 };
 
-template <int D>
-IVec<D> corner(int v) {
-  IVec<D> offset;
-  for (int a = 0; a < D; ++a) offset[a] = (v >> a) & 1;
-  return offset;
-}
-
 // Multilinear interpolation of a cell's corner samples at t in [0, 1]^D.
 template <int D>
 Sample<D> interpolate(const std::array<const Sample<D>*, 1 << D>& corners, const Vec<D>& t) {
@@ -98,14 +92,9 @@ Sample<D> interpolate(const std::array<const Sample<D>*, 1 << D>& corners, const
 // |J^T J - I| / 2 for the cell's mean Jacobian from its corner positions.
 template <int D>
 float strain_of(const std::array<const Sample<D>*, 1 << D>& corners, double spacing) {
-  Mat<D> jacobian = Mat<D>::Zero();
-  for (int v = 0; v < (1 << D); ++v)
-    for (int a = 0; a < D; ++a)
-      if ((v >> a) & 1)
-        jacobian.col(a) +=
-            corners[static_cast<std::size_t>(v)]->position - corners[static_cast<std::size_t>(v & ~(1 << a))]->position;
-  jacobian /= spacing * static_cast<double>(1 << (D - 1));
-  return static_cast<float>(0.5 * (jacobian.transpose() * jacobian - Mat<D>::Identity()).norm());
+  std::array<Vec<D>, 1 << D> images;
+  for (std::size_t v = 0; v < images.size(); ++v) images[v] = corners[v]->position;
+  return cube_strain<D>(images, spacing);
 }
 
 // The samples at a box's nodes, for the cells asked.
@@ -117,7 +106,7 @@ struct NodeSamples {
   std::array<const Sample<D>*, 1 << D> corners(const Box<D>& box, const IVec<D>& c) const {
     std::array<const Sample<D>*, 1 << D> out;
     for (int v = 0; v < (1 << D); ++v)
-      out[static_cast<std::size_t>(v)] = &samples[static_cast<std::size_t>(slot[box.node_index(c + corner<D>(v))])];
+      out[static_cast<std::size_t>(v)] = &samples[static_cast<std::size_t>(slot[box.node_index(c + corner_offset<D>(v))])];
     return out;
   }
 };
@@ -237,7 +226,7 @@ MlsRestLattice<D>::MlsRestLattice(const PointSet<D>& points, const MlsLatticeOpt
     l.cells.push_back(c);
     std::array<std::uint32_t, 1 << D>& corners = l.cell_nodes.emplace_back();
     for (int v = 0; v < (1 << D); ++v) {
-      const IVec<D> node = c + corner<D>(v);
+      const IVec<D> node = c + corner_offset<D>(v);
       std::uint32_t& slot = node_in_list[l.box.node_index(node)];
       if (slot == kNone) {
         slot = static_cast<std::uint32_t>(l.node_list.size());

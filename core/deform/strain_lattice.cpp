@@ -27,13 +27,6 @@ std::size_t index_in(const IVec<D>& v, const IVec<D>& size) {
   return index;
 }
 
-template <int D>
-IVec<D> corner(int v) {
-  IVec<D> offset;
-  for (int a = 0; a < D; ++a) offset[a] = (v >> a) & 1;
-  return offset;
-}
-
 }  // namespace
 
 template <int D>
@@ -102,7 +95,7 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
     if (!used[index_in<D>(c, cells)]) return;
     used_cells.push_back(c);
     for (int v = 0; v < (1 << D); ++v) {
-      const IVec<D> node = c + corner<D>(v);
+      const IVec<D> node = c + corner_offset<D>(v);
       std::int32_t& slot = node_slot[index_in<D>(node, node_size)];
       if (slot != kNone) continue;
       slot = static_cast<std::int32_t>(nodes.positions.size());
@@ -121,7 +114,7 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
       std::array<Vec<D>, 1 << D> images;
       for (int v = 0; v < (1 << D); ++v)
         images[static_cast<std::size_t>(v)] =
-            nodes.positions[static_cast<std::size_t>(node_slot[index_in<D>(used_cells[k] + corner<D>(v), node_size)])];
+            nodes.positions[static_cast<std::size_t>(node_slot[index_in<D>(used_cells[k] + corner_offset<D>(v), node_size)])];
       cell_strain[index_in<D>(used_cells[k], cells)] = cube_strain<D>(images, spacing);
     }
   });

@@ -93,4 +93,12 @@ void for_each_index_in_box(const IVec<D>& lo, const IVec<D>& hi, Fn&& fn) {
   }
 }
 
+// Corner v of the unit cube: bit a of v is the offset along axis a.
+template <int D>
+IVec<D> corner_offset(int v) {
+  IVec<D> offset;
+  for (int a = 0; a < D; ++a) offset[a] = (v >> a) & 1;
+  return offset;
+}
+
 }  // namespace amls

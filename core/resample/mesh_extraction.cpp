@@ -23,14 +23,6 @@ constexpr int kCubeCorners = 1 << D;
 // facets lie up to about 1e-2 h inside the sphere).
 constexpr double kEndMargin = 1e-3;
 
-// Corner c of the unit cube: bit a of c is the offset along axis a.
-template <int D>
-IVec<D> corner_offset(int c) {
-  IVec<D> offset;
-  for (int a = 0; a < D; ++a) offset[a] = (c >> a) & 1;
-  return offset;
-}
-
 // A simplex of Kuhn's triangulation of the unit cube: its corners (as cube
 // corners, each one axis beyond the last) and the sign of its orientation,
 // det(c1 - c0, ..., cD - c0), which is the sign of its axis permutation.

@@ -16,14 +16,6 @@ namespace amls {
 
 namespace {
 
-// Corner v of the unit cube: bit a of v is the offset along axis a.
-template <int D>
-IVec<D> corner_offset(int v) {
-  IVec<D> offset;
-  for (int a = 0; a < D; ++a) offset[a] = (v >> a) & 1;
-  return offset;
-}
-
 // Bit masks over a brick's vertices (VertexField::local_index order) for the
 // edges along each axis: inner[axis] marks the vertices whose edge ends in the
 // same brick (coordinate < 3 along the axis), first_layer[axis] those with
