@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -33,10 +34,12 @@ constexpr double kRankOneFloor = 1e-10;
 constexpr double kOppositeFloor = 1e-12;
 // The polar iteration (polar_rotation) runs where det K exceeds this fraction
 // of |K|_F^3 (the largest it can be is 3^{-3/2}, about 0.19), and stops when a
-// step changes X by less than this (squared, Frobenius): X is then orthogonal
-// to rounding.
+// step changes X by less than this (squared, Frobenius): the iteration
+// converges quadratically, so X is then within rounding of orthogonal.
 constexpr double kPolarDeterminantFloor = 1e-3;
-constexpr double kPolarConverged = 1e-28;
+constexpr double kPolarConverged = 1e-20;
+// The scaling is dropped once it is this close to 1: near convergence it only costs.
+constexpr double kPolarScalingDone = 1e-2;
 constexpr int kPolarMaxSteps = 30;
 
 // cof(L) = det(L) L^{-T}, which exists even where L is singular.
@@ -115,19 +118,26 @@ RotationFit<3> fit_rotation(const Mat<3>& k) {
 }
 
 // The rotation of fit_rotation() by Newton's iteration for the polar factor,
-// X <- (g X + X^{-T} / g) / 2 with g = |det X|^{-1/3} (Higham's scaling),
-// which converges quadratically from K itself: a few dozen flops a step
-// against a Jacobi SVD's hundreds. Nothing when K is not well inside the
-// proper, full-rank case (det K <= 0 or small against |K|^3): the SVD's
-// handling of reflections and rank deficiency is needed there.
+// X <- (g X + X^{-T} / g) / 2, scaled by g = (|X^{-1}|_F / |X|_F)^{1/2}
+// (Higham's Frobenius scaling: square roots only, where the determinant
+// scaling takes cube roots) until g is near 1. It converges quadratically
+// from K itself: a few dozen flops a step against a Jacobi SVD's hundreds.
+// Nothing when K is not well inside the proper, full-rank case (det K <= 0
+// or small against |K|^3): the SVD's handling of reflections and rank
+// deficiency is needed there.
 std::optional<RotationFit<3>> polar_rotation(const Mat<3>& k) {
   const double size = k.norm();
   if (!(size > 0.0) || !(k.determinant() > kPolarDeterminantFloor * size * size * size)) return std::nullopt;
   Mat<3> x = k;
+  bool scaled = true;
   for (int step = 0; step < kPolarMaxSteps; ++step) {
     const Mat<3> c = cofactor(x);  // det(X) X^{-T}
     const double det = x.row(0).dot(c.row(0));
-    const double g = 1.0 / std::cbrt(det);
+    double g = 1.0;
+    if (scaled) {
+      g = std::sqrt(std::sqrt(c.squaredNorm() / x.squaredNorm()) / std::abs(det));
+      scaled = std::abs(g - 1.0) >= kPolarScalingDone;
+    }
     const Mat<3> next = 0.5 * (g * x + c / (det * g));
     const double change = (next - x).squaredNorm();
     x = next;
@@ -223,7 +233,7 @@ typename MlsDeformation<D>::Handles MlsDeformation<D>::make_handles(std::vector<
 
 template <int D>
 MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>& v,
-                                           std::vector<double>& weights) const {
+                                           double* weights) const {
   const std::vector<Vec<D>>& p = handles.p;
   const std::vector<Vec<D>>& q = handles.q;
   const std::size_t n = p.size();
@@ -231,7 +241,6 @@ MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>&
   if (n == 0) return local;
 
   // Squared distances first; the nearest handle decides whether v is on one.
-  weights.resize(n);
   std::size_t nearest = 0;
   for (std::size_t i = 0; i < n; ++i) {
     weights[i] = (p[i] - v).squaredNorm();
@@ -304,8 +313,11 @@ MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>&
 
 template <int D>
 MlsLocalMap<D> MlsDeformation<D>::local_map(const Vec<D>& v) const {
-  std::vector<double> weights;
-  const MlsLocalMap<D> local = evaluate(direct_, v, weights);
+  // A point at a time (the lattice's nodes): no allocation for the usual few handles.
+  constexpr std::size_t kFewHandles = 16;
+  std::array<double, kFewHandles> few;
+  std::vector<double> many(direct_.p.size() > kFewHandles ? direct_.p.size() : 0);
+  const MlsLocalMap<D> local = evaluate(direct_, v, many.empty() ? few.data() : many.data());
   if (local.affine_fell_back) fallbacks_.count.fetch_add(1, std::memory_order_relaxed);
   return local;
 }
@@ -319,10 +331,10 @@ void MlsDeformation<D>::transform(const Handles& handles, PointSet<D>& points, T
   // No handles, no deformation: leave even the normals' last bits alone.
   if (handles.p.empty()) return;
   pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-    std::vector<double> weights;
+    std::vector<double> weights(handles.p.size());
     std::size_t fell_back = 0;
     for (std::size_t i = begin; i < end; ++i) {
-      const MlsLocalMap<D> local = evaluate(handles, points.positions[i], weights);
+      const MlsLocalMap<D> local = evaluate(handles, points.positions[i], weights.data());
       points.positions[i] = local.position;
       if (carry_normals) points.normals[i] = carry_normal<D>(local.linear, points.normals[i]);
       if (local.affine_fell_back) ++fell_back;

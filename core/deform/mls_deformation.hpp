@@ -104,8 +104,8 @@ class MlsDeformation final : public Deformation<D> {
   };
 
   static Handles make_handles(std::vector<Vec<D>> p, std::vector<Vec<D>> q);
-  // `weights` is scratch space, reused from point to point.
-  MlsLocalMap<D> evaluate(const Handles& handles, const Vec<D>& v, std::vector<double>& weights) const;
+  // `weights` is scratch space for one entry per handle.
+  MlsLocalMap<D> evaluate(const Handles& handles, const Vec<D>& v, double* weights) const;
   void transform(const Handles& handles, PointSet<D>& points, ThreadPool& pool) const;
 
   Handles direct_;

@@ -27,6 +27,16 @@ struct Sample {
   Mat<D> linear;
 };
 
+// What the interpolation needs at a node: where it was, its image and L
+// there, and half the map's Jacobian (the weight of the Taylor blend).
+template <int D>
+struct Node {
+  Vec<D> rest;
+  Vec<D> position;
+  Mat<D> linear;
+  Mat<D> half_jacobian;
+};
+
 template <int D>
 Sample<D> exact_sample(const MlsDeformation<D>& map, const Vec<D>& x) {
   const MlsLocalMap<D> local = map.local_map(x);
@@ -39,6 +49,9 @@ struct Box {
   Vec<D> origin = Vec<D>::Zero();
   double spacing = 1.0;
   IVec<D> cells = IVec<D>::Ones();
+  // locate() keeps this many cells free on every side (a point rounded onto
+  // the box's edge still lands in a cell whose halo fits).
+  std::int64_t margin = 0;
 
   std::size_t count(std::int64_t extra) const {
     std::size_t n = 1;
@@ -47,22 +60,22 @@ struct Box {
   }
   std::size_t cell_index(const IVec<D>& c) const { return index_in(c, 0); }
   std::size_t node_index(const IVec<D>& n) const { return index_in(n, 1); }
-  // The cell holding x (clamped into the box) and x's place in it, each coordinate in [0, 1].
+  // The cell holding x (clamped into the box within its margin) and x's place in it, each coordinate in [0, 1].
   IVec<D> locate(const Vec<D>& x, Vec<D>& t) const {
     IVec<D> c;
     for (int a = 0; a < D; ++a) {
       const double u = (x[a] - origin[a]) / spacing;
-      c[a] = std::clamp(static_cast<std::int64_t>(std::floor(u)), std::int64_t{0}, cells[a] - 1);
+      c[a] = std::clamp(static_cast<std::int64_t>(std::floor(u)), margin, cells[a] - 1 - margin);
       t[a] = std::clamp(u - static_cast<double>(c[a]), 0.0, 1.0);
     }
     return c;
   }
   Vec<D> node_position(const IVec<D>& n) const { return origin + spacing * n.template cast<double>(); }
-  // Whether x lies within `margin` cells of cell c.
-  bool near_cell(const IVec<D>& c, const Vec<D>& x, double margin) const {
+  // Whether x lies within `reach` cells of cell c.
+  bool near_cell(const IVec<D>& c, const Vec<D>& x, double reach) const {
     for (int a = 0; a < D; ++a) {
       const double u = (x[a] - origin[a]) / spacing - static_cast<double>(c[a]);
-      if (u < -margin || u > 1.0 + margin) return false;
+      if (u < -reach || u > 1.0 + reach) return false;
     }
     return true;
   }
@@ -76,37 +89,41 @@ struct Box {
   }
 };
 
-// Multilinear interpolation of a cell's corner samples at t in [0, 1]^D.
 template <int D>
-Sample<D> interpolate(const std::array<const Sample<D>*, 1 << D>& corners, const Vec<D>& t) {
+using Corners = std::array<const Node<D>*, 1 << D>;
+
+// The multilinear weight of corner v at t in [0, 1]^D.
+template <int D>
+double corner_weight(int v, const Vec<D>& t) {
+  double w = 1.0;
+  for (int a = 0; a < D; ++a) w *= (v >> a) & 1 ? t[a] : 1.0 - t[a];
+  return w;
+}
+
+// The map at x, at t in its cell: positions to third order (the header's
+// mean of the multilinear interpolant and the Taylor blend), L multilinearly.
+template <int D>
+Sample<D> interpolate(const Corners<D>& corners, const Vec<D>& t, const Vec<D>& x) {
   Sample<D> out{Vec<D>::Zero(), Mat<D>::Zero()};
   for (int v = 0; v < (1 << D); ++v) {
-    double w = 1.0;
-    for (int a = 0; a < D; ++a) w *= (v >> a) & 1 ? t[a] : 1.0 - t[a];
-    out.position += w * corners[static_cast<std::size_t>(v)]->position;
-    out.linear += w * corners[static_cast<std::size_t>(v)]->linear;
+    const Node<D>& node = *corners[static_cast<std::size_t>(v)];
+    const double w = corner_weight<D>(v, t);
+    out.position += w * (node.position + node.half_jacobian * (x - node.rest));
+    out.linear += w * node.linear;
   }
   return out;
 }
 
-// |J^T J - I| / 2 for the cell's mean Jacobian from its corner positions.
+// The nodes of a box, for the cells asked.
 template <int D>
-float strain_of(const std::array<const Sample<D>*, 1 << D>& corners, double spacing) {
-  std::array<Vec<D>, 1 << D> images;
-  for (std::size_t v = 0; v < images.size(); ++v) images[v] = corners[v]->position;
-  return cube_strain<D>(images, spacing);
-}
+struct BoxNodes {
+  std::vector<std::int32_t> slot;  // node index -> node, -1: not mapped
+  std::vector<Node<D>> nodes;
 
-// The samples at a box's nodes, for the cells asked.
-template <int D>
-struct NodeSamples {
-  std::vector<std::int32_t> slot;  // node index -> sample, -1: not evaluated
-  std::vector<Sample<D>> samples;
-
-  std::array<const Sample<D>*, 1 << D> corners(const Box<D>& box, const IVec<D>& c) const {
-    std::array<const Sample<D>*, 1 << D> out;
+  Corners<D> corners(const Box<D>& box, const IVec<D>& c) const {
+    Corners<D> out;
     for (int v = 0; v < (1 << D); ++v)
-      out[static_cast<std::size_t>(v)] = &samples[static_cast<std::size_t>(slot[box.node_index(c + corner_offset<D>(v))])];
+      out[static_cast<std::size_t>(v)] = &nodes[static_cast<std::size_t>(slot[box.node_index(c + corner_offset<D>(v))])];
     return out;
   }
 };
@@ -115,42 +132,48 @@ struct NodeSamples {
 template <int D>
 struct Refined {
   Box<D> box;
-  NodeSamples<D> nodes;
+  BoxNodes<D> nodes;
   std::vector<std::uint8_t> exact;
-  std::vector<float> strain;
 };
 
 // Whether the map at a cell's centre is off the interpolant by more than the
 // tolerance, or a handle lies within one cell of it.
 template <int D>
-bool needs_refinement(const MlsDeformation<D>& map, const Box<D>& box, const IVec<D>& c,
-                      const std::array<const Sample<D>*, 1 << D>& corners, double tolerance) {
+bool needs_refinement(const MlsDeformation<D>& map, const Box<D>& box, const IVec<D>& c, const Corners<D>& corners,
+                      double tolerance) {
   for (const Vec<D>& handle : map.from())
     if (box.near_cell(c, handle, 1.0)) return true;
   const Vec<D> centre = box.node_position(c).array() + 0.5 * box.spacing;
-  const Vec<D> half = Vec<D>::Constant(0.5);
-  return (interpolate<D>(corners, half).position - map.map(centre)).norm() > tolerance;
+  return (interpolate<D>(corners, Vec<D>::Constant(0.5), centre).position - map.map(centre)).norm() > tolerance;
 }
 
+// Sub-nodes are mapped exactly; their Jacobians, which the exact map does not
+// give, are interpolated from the coarse cell's corners: errors of second
+// order in the coarse spacing, times offsets within a sub-cell.
 template <int D>
-Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec<D>& c, const MlsLatticeOptions& o) {
+Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec<D>& c, const Corners<D>& corners,
+                  const MlsLatticeOptions& o) {
   Refined<D> r;
   r.box.origin = coarse.node_position(c);
   r.box.spacing = coarse.spacing / o.refinement;
   r.box.cells = IVec<D>::Constant(o.refinement);
   const std::size_t nodes = r.box.count(1);
   r.nodes.slot.resize(nodes);
-  r.nodes.samples.reserve(nodes);
+  r.nodes.nodes.reserve(nodes);
   for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells, [&](const IVec<D>& n) {
-    r.nodes.slot[r.box.node_index(n)] = static_cast<std::int32_t>(r.nodes.samples.size());
-    r.nodes.samples.push_back(exact_sample(map, r.box.node_position(n)));
+    r.nodes.slot[r.box.node_index(n)] = static_cast<std::int32_t>(r.nodes.nodes.size());
+    const Vec<D> x = r.box.node_position(n);
+    const Vec<D> t = n.template cast<double>() / static_cast<double>(o.refinement);
+    Mat<D> half_jacobian = Mat<D>::Zero();
+    for (int v = 0; v < (1 << D); ++v)
+      half_jacobian += corner_weight<D>(v, t) * corners[static_cast<std::size_t>(v)]->half_jacobian;
+    const Sample<D> exact = exact_sample(map, x);
+    r.nodes.nodes.push_back({x, exact.position, exact.linear, half_jacobian});
   });
   r.exact.resize(r.box.count(0));
-  r.strain.resize(r.box.count(0));
   for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells.array() - 1, [&](const IVec<D>& s) {
-    const auto corners = r.nodes.corners(r.box, s);
-    r.exact[r.box.cell_index(s)] = needs_refinement(map, r.box, s, corners, o.tolerance) ? 1 : 0;
-    r.strain[r.box.cell_index(s)] = strain_of<D>(corners, r.box.spacing);
+    r.exact[r.box.cell_index(s)] =
+        needs_refinement(map, r.box, s, r.nodes.corners(r.box, s), o.tolerance) ? 1 : 0;
   });
   return r;
 }
@@ -162,11 +185,17 @@ struct MlsRestLattice<D>::Layout {
   MlsLatticeOptions options;
   std::size_t points = 0;
   bool fell_back = false;  // see MlsLatticeStats::fell_back
+  // One cell wider on every side than the points' box, so that the halo fits.
   Box<D> box;
   std::vector<IVec<D>> cells;                                 // the cells holding points, row-major
   std::vector<std::array<std::uint32_t, 1 << D>> cell_nodes;  // each cell's corners, in node_list
-  std::vector<IVec<D>> node_list;                             // the cells' nodes
-  std::vector<std::uint32_t> point_cell;                      // each point's cell, in `cells`
+  // The cells' corners first (`corner_nodes` of them), then the halo: their
+  // neighbours along the axes that are no corner.
+  std::vector<IVec<D>> node_list;
+  std::size_t corner_nodes = 0;
+  // Each corner's neighbours in node_list: 2a one below along axis a, 2a + 1 one above.
+  std::vector<std::array<std::uint32_t, 2 * D>> neighbours;
+  std::vector<std::uint32_t> point_cell;  // each point's cell, in `cells`
 
   template <typename T>
   std::array<const T*, 1 << D> corners(const std::vector<T>& at_nodes, std::size_t cell) const {
@@ -190,25 +219,27 @@ MlsRestLattice<D>::MlsRestLattice(const PointSet<D>& points, const MlsLatticeOpt
   l.points = n;
   if (n == 0) return;
 
-  // The points' box, in lattice cells.
+  // The points' box, in lattice cells, and one more cell on every side.
   Vec<D> lo = points.positions.front(), hi = lo;
   for (const Vec<D>& p : points.positions) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  l.box.origin = lo;
+  l.box.origin = lo.array() - options.spacing;
   l.box.spacing = options.spacing;
+  l.box.margin = 1;
   double total_cells = 1.0;
   for (int a = 0; a < D; ++a) {
-    l.box.cells[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / options.spacing)) + 1;
-    total_cells *= static_cast<double>(l.box.cells[a]);
+    const double across = std::floor((hi[a] - lo[a]) / options.spacing) + 3.0;
+    total_cells *= across;
+    l.box.cells[a] = std::isfinite(across) ? static_cast<std::int64_t>(std::min(across, 1e9)) : 1;
   }
   if (!std::isfinite(total_cells) || total_cells > kMaxCellsPerPoint * static_cast<double>(n) + kMinCells) {
     l.fell_back = true;
     return;
   }
 
-  // The cells holding points (first by their index in the box), and their nodes.
+  // The cells holding points (first by their index in the box), their corners, then the halo.
   l.point_cell.resize(n);
   pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
     Vec<D> t;
@@ -219,22 +250,31 @@ MlsRestLattice<D>::MlsRestLattice(const PointSet<D>& points, const MlsLatticeOpt
   std::vector<std::uint32_t> cell_in_list(l.box.count(0), kNone);
   for (const std::uint32_t c : l.point_cell) cell_in_list[c] = 0;
   std::vector<std::uint32_t> node_in_list(l.box.count(1), kNone);
+  auto node_slot = [&](const IVec<D>& node) {
+    std::uint32_t& slot = node_in_list[l.box.node_index(node)];
+    if (slot == kNone) {
+      slot = static_cast<std::uint32_t>(l.node_list.size());
+      l.node_list.push_back(node);
+    }
+    return slot;
+  };
   for_each_index_in_box<D>(IVec<D>::Zero(), l.box.cells.array() - 1, [&](const IVec<D>& c) {
     std::uint32_t& in_list = cell_in_list[l.box.cell_index(c)];
     if (in_list == kNone) return;
     in_list = static_cast<std::uint32_t>(l.cells.size());
     l.cells.push_back(c);
     std::array<std::uint32_t, 1 << D>& corners = l.cell_nodes.emplace_back();
-    for (int v = 0; v < (1 << D); ++v) {
-      const IVec<D> node = c + corner_offset<D>(v);
-      std::uint32_t& slot = node_in_list[l.box.node_index(node)];
-      if (slot == kNone) {
-        slot = static_cast<std::uint32_t>(l.node_list.size());
-        l.node_list.push_back(node);
-      }
-      corners[static_cast<std::size_t>(v)] = slot;
-    }
+    for (int v = 0; v < (1 << D); ++v) corners[static_cast<std::size_t>(v)] = node_slot(c + corner_offset<D>(v));
   });
+  l.corner_nodes = l.node_list.size();
+  l.neighbours.resize(l.corner_nodes);
+  for (std::size_t k = 0; k < l.corner_nodes; ++k)
+    for (int a = 0; a < D; ++a) {
+      // node_list grows here: copy the corner rather than hold a reference into it.
+      const IVec<D> node = l.node_list[k];
+      l.neighbours[k][static_cast<std::size_t>(2 * a)] = node_slot(node - IVec<D>::Unit(a));
+      l.neighbours[k][static_cast<std::size_t>(2 * a + 1)] = node_slot(node + IVec<D>::Unit(a));
+    }
   for (std::uint32_t& c : l.point_cell) c = cell_in_list[c];
 }
 
@@ -247,7 +287,7 @@ MlsRestLattice<D>& MlsRestLattice<D>::operator=(MlsRestLattice&&) noexcept = def
 
 template <int D>
 MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const PointSet<D>& points, PointSet<D>& mapped,
-                                       std::vector<float>* strain, ThreadPool& pool) const {
+                                       std::vector<float>* strain, MlsNodeImages<D>* last, ThreadPool& pool) const {
   const Layout& l = *layout_;
   const MlsLatticeOptions& options = l.options;
   const std::size_t n = points.size();
@@ -271,53 +311,86 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     stats.exact_points = stats.evaluations = n;
     map_exactly();
     if (strain) std::fill(strain->begin(), strain->end(), std::numeric_limits<float>::infinity());
+    if (last) last->clear();
     return stats;
   }
   const Box<D>& box = l.box;
 
-  // The nodes, evaluated exactly.
-  std::vector<Sample<D>> nodes(l.node_list.size());
+  // The nodes, mapped exactly, then the corners' Jacobians from their neighbours.
+  std::vector<Node<D>> nodes(l.node_list.size());
   pool.parallel_for(l.node_list.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) nodes[k] = exact_sample(map, box.node_position(l.node_list[k]));
+    for (std::size_t k = begin; k < end; ++k) {
+      const Vec<D> x = box.node_position(l.node_list[k]);
+      const Sample<D> exact = exact_sample(map, x);
+      nodes[k] = {x, exact.position, exact.linear, Mat<D>::Zero()};
+    }
   });
+  pool.parallel_for(l.corner_nodes, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k)
+      for (int a = 0; a < D; ++a)
+        nodes[k].half_jacobian.col(a) = (nodes[l.neighbours[k][static_cast<std::size_t>(2 * a + 1)]].position -
+                                         nodes[l.neighbours[k][static_cast<std::size_t>(2 * a)]].position) /
+                                        (4.0 * box.spacing);
+  });
+  stats.nodes = nodes.size();
 
-  // Check every cell; refine those that fail.
-  constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  // The step's strain per cell, from the corners' images under the last map and this one.
   std::vector<float> cell_strain(l.cells.size(), 0.0F);
+  const bool from_rest = !last || last->empty();
   pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      const auto corners = l.corners(nodes, k);
-      if (options.interpolate && needs_refinement(map, box, l.cells[k], corners, options.tolerance)) refined_of[k] = 0;
-      cell_strain[k] = strain_of<D>(corners, box.spacing);
+      std::array<Vec<D>, 1 << D> before, after;
+      for (std::size_t v = 0; v < before.size(); ++v) {
+        const Node<D>& node = nodes[l.cell_nodes[k][v]];
+        before[v] = from_rest ? node.rest : (*last)[l.cell_nodes[k][v]];
+        after[v] = node.position;
+      }
+      cell_strain[k] = from_rest ? cube_strain<D>(after, box.spacing) : step_cube_strain<D>(before, after, box.spacing);
     }
   });
-  std::vector<IVec<D>> to_refine;
-  for (std::size_t k = 0; k < l.cells.size(); ++k)
-    if (refined_of[k] != kInterpolated) {
-      refined_of[k] = static_cast<std::uint32_t>(to_refine.size());
-      to_refine.push_back(l.cells[k]);
-    }
-  std::vector<Refined<D>> refined(to_refine.size());
-  pool.parallel_for(to_refine.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) refined[k] = refine(map, box, to_refine[k], options);
-  });
-
+  if (last) {
+    last->resize(l.corner_nodes);
+    for (std::size_t k = 0; k < l.corner_nodes; ++k) (*last)[k] = nodes[k].position;
+  }
+  auto add_strain = [&] {
+    if (!strain) return;
+    pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t i = begin; i < end; ++i) (*strain)[i] += cell_strain[l.point_cell[i]];
+    });
+  };
   stats.cells = l.cells.size();
   if (!options.interpolate) {
     stats.evaluations = nodes.size() + n;
     stats.exact_points = n;
     map_exactly();
-    if (strain)
-      for (std::size_t i = 0; i < n; ++i) (*strain)[i] += cell_strain[l.point_cell[i]];
+    add_strain();
     return stats;
   }
+
+  // Check every cell; refine those that fail.
+  constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k)
+      if (needs_refinement(map, box, l.cells[k], l.corners(nodes, k), options.tolerance)) refined_of[k] = 0;
+  });
+  std::vector<std::size_t> to_refine;
+  for (std::size_t k = 0; k < l.cells.size(); ++k)
+    if (refined_of[k] != kInterpolated) {
+      refined_of[k] = static_cast<std::uint32_t>(to_refine.size());
+      to_refine.push_back(k);
+    }
+  std::vector<Refined<D>> refined(to_refine.size());
+  pool.parallel_for(to_refine.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k)
+      refined[k] = refine(map, box, l.cells[to_refine[k]], l.corners(nodes, to_refine[k]), options);
+  });
 
   // The points.
   stats.refined_cells = refined.size();
   // Nodes and centre checks, coarse and refined; the exact points are added below.
   stats.evaluations = nodes.size() + l.cells.size();
-  for (const Refined<D>& r : refined) stats.evaluations += r.nodes.samples.size() + r.exact.size();
+  for (const Refined<D>& r : refined) stats.evaluations += r.nodes.nodes.size() + r.exact.size();
   for (const Refined<D>& r : refined)
     for (const std::uint8_t e : r.exact) stats.exact_cells += e;
   std::vector<std::size_t> exact_points(static_cast<std::size_t>(pool.threads()), 0);
@@ -331,37 +404,34 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
       const std::uint32_t k = l.point_cell[i];
       const std::uint32_t r = refined_of[k];
       Sample<D> sample;
-      float point_strain = cell_strain[k];
       if (r == kInterpolated) {
         box.locate(p, t);
-        sample = interpolate<D>(l.corners(nodes, k), t);
+        sample = interpolate<D>(l.corners(nodes, k), t, p);
       } else {
         const Refined<D>& cell = refined[r];
         const IVec<D> s = cell.box.locate(p, t);
-        const std::size_t s_index = cell.box.cell_index(s);
-        point_strain = cell.strain[s_index];
-        if (cell.exact[s_index]) {
+        if (cell.exact[cell.box.cell_index(s)]) {
           sample = exact_sample(map, p);
           ++exact_here;
         } else {
-          sample = interpolate<D>(cell.nodes.corners(cell.box, s), t);
+          sample = interpolate<D>(cell.nodes.corners(cell.box, s), t, p);
         }
       }
       mapped.positions[i] = sample.position;
       mapped.normals[i] = carry_normal<D>(sample.linear, points.normals[i]);
-      if (strain) (*strain)[i] += point_strain;
     }
     exact_points[static_cast<std::size_t>(block)] += exact_here;
   });
   for (const std::size_t e : exact_points) stats.exact_points += e;
   stats.evaluations += stats.exact_points;
+  add_strain();
   return stats;
 }
 
 template <int D>
 MlsLatticeStats apply_on_lattice(const MlsDeformation<D>& map, PointSet<D>& points, std::vector<float>* strain,
                                  const MlsLatticeOptions& options, ThreadPool& pool) {
-  return MlsRestLattice<D>(points, options, pool).map(map, points, points, strain, pool);
+  return MlsRestLattice<D>(points, options, pool).map(map, points, points, strain, nullptr, pool);
 }
 
 template class MlsRestLattice<2>;

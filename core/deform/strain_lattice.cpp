@@ -1,5 +1,6 @@
 #include "core/deform/strain_lattice.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -27,17 +28,36 @@ std::size_t index_in(const IVec<D>& v, const IVec<D>& size) {
   return index;
 }
 
-}  // namespace
-
+// The mean Jacobian over a cube of side `spacing` from its corners' images.
 template <int D>
-float cube_strain(const std::array<Vec<D>, 1 << D>& images, double spacing) {
+Mat<D> cube_jacobian(const std::array<Vec<D>, 1 << D>& images, double spacing) {
   Mat<D> jacobian = Mat<D>::Zero();
   for (int v = 0; v < (1 << D); ++v)
     for (int a = 0; a < D; ++a)
       if ((v >> a) & 1)
         jacobian.col(a) += images[static_cast<std::size_t>(v)] - images[static_cast<std::size_t>(v & ~(1 << a))];
-  jacobian /= spacing * static_cast<double>(1 << (D - 1));
+  return jacobian / (spacing * static_cast<double>(1 << (D - 1)));
+}
+
+template <int D>
+float strain_of(const Mat<D>& jacobian) {
   return static_cast<float>(0.5 * (jacobian.transpose() * jacobian - Mat<D>::Identity()).norm());
+}
+
+}  // namespace
+
+template <int D>
+float cube_strain(const std::array<Vec<D>, 1 << D>& images, double spacing) {
+  return strain_of<D>(cube_jacobian<D>(images, spacing));
+}
+
+template <int D>
+float step_cube_strain(const std::array<Vec<D>, 1 << D>& before, const std::array<Vec<D>, 1 << D>& after,
+                       double spacing) {
+  const Mat<D> from = cube_jacobian<D>(before, spacing);
+  const double det = from.determinant();
+  if (!(det > 0.0) || !std::isfinite(det)) return std::numeric_limits<float>::infinity();
+  return strain_of<D>(Mat<D>(cube_jacobian<D>(after, spacing) * from.inverse()));
 }
 
 template <int D>
@@ -58,6 +78,9 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+  // The cells start one below the points' box, as the MLS lattice's do (its
+  // nodes need a halo there): for an MLS map both measure the same cells.
+  lo.array() -= spacing;
   IVec<D> cells;
   double total_cells = 1.0;
   for (int a = 0; a < D; ++a) {
@@ -130,5 +153,7 @@ template StrainLatticeStats add_step_strain<3>(const Deformation<3>&, double, do
                                                double, std::vector<float>&, ThreadPool&);
 template float cube_strain<2>(const std::array<Vec<2>, 4>&, double);
 template float cube_strain<3>(const std::array<Vec<3>, 8>&, double);
+template float step_cube_strain<2>(const std::array<Vec<2>, 4>&, const std::array<Vec<2>, 4>&, double);
+template float step_cube_strain<3>(const std::array<Vec<3>, 8>&, const std::array<Vec<3>, 8>&, double);
 
 }  // namespace amls

@@ -41,6 +41,12 @@ StrainLatticeStats add_step_strain(const Deformation<D>& deformation, double t0,
 // corner v (offset 1 along axis a where bit a of v is set) went to images[v].
 template <int D>
 float cube_strain(const std::array<Vec<D>, 1 << D>& images, double spacing);
+// The strain of the step between two maps of that cube: |J^T J - I| / 2 for
+// J = J_after J_before^{-1}, the mean Jacobians from the corners' images
+// under each; infinity where `before` has folded the cube flat or inside out.
+template <int D>
+float step_cube_strain(const std::array<Vec<D>, 1 << D>& before, const std::array<Vec<D>, 1 << D>& after,
+                       double spacing);
 
 extern template StrainLatticeStats add_step_strain<2>(const Deformation<2>&, double, double, const std::vector<Vec<2>>&,
                                                       double, std::vector<float>&, ThreadPool&);
@@ -48,5 +54,7 @@ extern template StrainLatticeStats add_step_strain<3>(const Deformation<3>&, dou
                                                       double, std::vector<float>&, ThreadPool&);
 extern template float cube_strain<2>(const std::array<Vec<2>, 4>&, double);
 extern template float cube_strain<3>(const std::array<Vec<3>, 8>&, double);
+extern template float step_cube_strain<2>(const std::array<Vec<2>, 4>&, const std::array<Vec<2>, 4>&, double);
+extern template float step_cube_strain<3>(const std::array<Vec<3>, 8>&, const std::array<Vec<3>, 8>&, double);
 
 }  // namespace amls

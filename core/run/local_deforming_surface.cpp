@@ -11,17 +11,16 @@ namespace amls {
 
 namespace {
 
-// The lattice that interpolates the map, in h: a cell holds a few hundred
-// points, so its nodes cost a few percent of mapping every point exactly.
-constexpr double kLatticeSpacing = 12.0;
+// The lattice that interpolates the map and measures each step's strain, in
+// h: the strain limits were tuned with its cells (docs/local-resampling.md),
+// and a cell holds a few hundred points, so its nodes cost a small part of
+// mapping every point exactly.
+constexpr double kLatticeSpacing = 8.0;
 // How far (in h) the interpolated map may be from the exact one at a cell's
 // centre. The points are mapped from their rest positions at every step, so
 // this bounds their error at every step; it does not add up.
-constexpr double kLatticeTolerance = 0.01;
+constexpr double kLatticeTolerance = 0.001;
 constexpr int kLatticeRefinement = 4;
-// The lattice that measures each step's strain, in h: the strain limits were
-// tuned with it (docs/local-resampling.md).
-constexpr double kStrainLatticeSpacing = 8.0;
 
 }  // namespace
 
@@ -83,6 +82,7 @@ void LocalDeformingSurface<D>::restore(Saved saved) {
   strain_ = std::move(saved.strain);
   rest_ = std::move(saved.rest);
   current_ = std::move(saved.current);
+  node_images_ = std::move(saved.node_images);
   exact_ = saved.exact;
 }
 
@@ -108,6 +108,7 @@ void LocalDeformingSurface<D>::rebase(const std::vector<Vec<D>>& handles, MlsKin
   leave_rest_state();
   rest_ = std::make_shared<const Rest>(Rest{points_, MlsRestLattice<D>(points_, lattice_, pool_), handles, kind, alpha});
   current_ = handles;
+  node_images_.clear();
 }
 
 template <int D>
@@ -120,12 +121,8 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
   // The strain of this step alone, summed: the whole drag's map can be nearly
   // rigid where its steps were not (a handle pulled out and back), and the
   // sampling followed the steps.
-  MlsDeformation<D> step_map(current_, deformation.to(), deformation.kind(), deformation.alpha());
-  step_map.use_polar_iteration(true);
-  const StrainLatticeStats step_strain = add_step_strain<D>(
-      step_map, 0.0, 1.0, points_.positions, kStrainLatticeSpacing * grid_.spacing(), strain_, pool_);
   const MlsDeformation<D> map = map_from_rest(deformation.to());
-  const MlsLatticeStats mapped = rest_->lattice.map(map, rest_->points, points_, nullptr, pool_);
+  const MlsLatticeStats mapped = rest_->lattice.map(map, rest_->points, points_, &strain_, &node_images_, pool_);
   current_ = deformation.to();
   exact_ = mapped.exact_points == points_.size();
   const double limit = resampler_.options().strain_limit;
@@ -146,7 +143,6 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
   }
   stats.points_before = before;
   stats.map = mapped;
-  stats.strain_lattice = step_strain;
   stats.timings.deform = deform_seconds;
   return stats;
 }
@@ -157,7 +153,7 @@ LocalStepStats LocalDeformingSurface<D>::step(const Deformation<D>& deformation,
   leave_rest_state();
   const std::size_t before = points_.size();
   const StrainLatticeStats lattice = add_step_strain(deformation, t0, t1, points_.positions,
-                                                     kStrainLatticeSpacing * grid_.spacing(), strain_, pool_);
+                                                     kLatticeSpacing * grid_.spacing(), strain_, pool_);
   deformation.deform(points_, t0, t1, pool_);
   const double deform_seconds = clock.lap();
   LocalStepStats stats = resample_strained();

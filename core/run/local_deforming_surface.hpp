@@ -1,8 +1,8 @@
 #pragma once
 // The deformation loop with local resampling (`--resample local`): each step
-// maps the points by the MLS map (its rotations by the polar iteration), an
+// maps the points by the MLS map (its rotations by the polar iteration), its
 // 8 h lattice adding to each point the strain of the step
-// (core/deform/strain_lattice.hpp), and resamples
+// (core/deform/mls_lattice.hpp), and resamples
 // only where the summed strain says the sampling has changed
 // (core/resample/local_resampling.hpp). Points elsewhere keep their positions
 // and carried normals; no whole-surface fit, F, walk or index is made.
@@ -11,11 +11,11 @@
 // positions (where they were when the drag, or the last resample, began) and
 // every step maps them from there by the one map that takes the handles' rest
 // positions to their current ones, interpolated on the lattice (within
-// 0.01 h of the exact map at the cells' centres, exact where it misses). Its
-// error is that of one interpolation at every step (up to a few times the
-// tolerance between the centres) instead of adding up from step to step. A step that resamples maps every point exactly
-// first, and then starts a new rest state for all points (the current handles become the rest handles), so nothing
-// interpolated is ever built upon.
+// 0.001 h of the exact map at the cells' centres, exact where it misses). Its
+// error is that of one interpolation at every step instead of adding up from
+// step to step. A step that resamples maps every point exactly first, and
+// then starts a new rest state for all points (the current handles become the
+// rest handles), so nothing interpolated is ever built upon.
 //
 // Any other deformation (a velocity field's flow) takes a step of its own:
 // the strain comes from the deformation's images of the nodes of an 8 h
@@ -33,7 +33,7 @@ namespace amls {
 
 struct LocalStepStats {
   PhaseTimings timings;  // deform: the map and the strain; normals, function, resample: the local resample's
-  MlsLatticeStats map;              // of an MLS step
+  MlsLatticeStats map;                // of an MLS step (the map and the strain)
   StrainLatticeStats strain_lattice;  // of any other deformation's step
   LocalResampleStats resample;
   std::size_t points_before = 0;
@@ -95,9 +95,10 @@ class LocalDeformingSurface {
     std::vector<float> strain;
     std::shared_ptr<const Rest> rest;
     std::vector<Vec<D>> current;
+    MlsNodeImages<D> node_images;
     bool exact = true;
   };
-  Saved save() const { return Saved{points_, strain_, rest_, current_, exact_}; }
+  Saved save() const { return Saved{points_, strain_, rest_, current_, node_images_, exact_}; }
   void restore(Saved saved);
 
  private:
@@ -118,6 +119,7 @@ class LocalDeformingSurface {
   // None before the first MLS step and after the points change otherwise.
   std::shared_ptr<const Rest> rest_;
   std::vector<Vec<D>> current_;  // the handles the points were last mapped to
+  MlsNodeImages<D> node_images_;  // the rest lattice's nodes mapped to current_ (empty: at rest)
   bool exact_ = true;            // points_ is the exact map of the rest points to current_
   ThreadPool pool_;
 };
