@@ -174,13 +174,15 @@ void check_time(double t) {
 // L^{-T} n = cof(L) n / det L. The cofactor form needs no inverse, so a
 // singular L (handles collapsed onto a plane) still gives a direction, and the
 // sign of det L keeps the normal pointing to where the outside went.
-// Degenerate results keep the old normal.
+template <int D>
+Mat<D> normal_transform(const Mat<D>& linear) {
+  const Mat<D> c = cofactor(linear);
+  return linear.determinant() < 0.0 ? Mat<D>(-c) : c;
+}
+
 template <int D>
 Vec<D> carry_normal(const Mat<D>& linear, const Vec<D>& normal) {
-  Vec<D> carried = cofactor(linear) * normal;
-  if (linear.determinant() < 0.0) carried = -carried;
-  const double length = carried.norm();
-  return length > 0.0 && std::isfinite(length) ? Vec<D>(carried / length) : normal;
+  return transform_normal<D>(normal_transform<D>(linear), normal);
 }
 
 const char* to_string(MlsKind kind) {
@@ -366,6 +368,8 @@ std::vector<Vec<D>> MlsDeformation<D>::handles_at(double t) const {
   return handles;
 }
 
+template Mat<2> normal_transform<2>(const Mat<2>&);
+template Mat<3> normal_transform<3>(const Mat<3>&);
 template Vec<2> carry_normal<2>(const Mat<2>&, const Vec<2>&);
 template Vec<3> carry_normal<3>(const Mat<3>&, const Vec<3>&);
 template class MlsDeformation<2>;

@@ -6,6 +6,7 @@
 // takes the handles' start positions p_i to their targets q_i under the weights
 // w_i(v) = 1 / |p_i - v|^(2 alpha), and moves to f(v) = l_v(v).
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -35,6 +36,19 @@ struct MlsLocalMap {
   // so l_v is the similarity map instead.
   bool affine_fell_back = false;
 };
+
+// The matrix that carries normals as L^{-T} does, up to their length:
+// sign(det L) cof(L) = |det L| L^{-T}. It exists even where L is singular.
+template <int D>
+Mat<D> normal_transform(const Mat<D>& linear);
+
+// M n renormalised; where that degenerates, n itself.
+template <int D>
+Vec<D> transform_normal(const Mat<D>& transform, const Vec<D>& normal) {
+  const Vec<D> carried = transform * normal;
+  const double length = carried.norm();
+  return length > 0.0 && std::isfinite(length) ? Vec<D>(carried / length) : normal;
+}
 
 // The unit normal n carried by a local map's linear part L: L^{-T} n,
 // renormalised; where that degenerates, n itself.
@@ -115,6 +129,8 @@ class MlsDeformation final : public Deformation<D> {
   mutable FallbackCounter fallbacks_;
 };
 
+extern template Mat<2> normal_transform<2>(const Mat<2>&);
+extern template Mat<3> normal_transform<3>(const Mat<3>&);
 extern template Vec<2> carry_normal<2>(const Mat<2>&, const Vec<2>&);
 extern template Vec<3> carry_normal<3>(const Mat<3>&, const Vec<3>&);
 extern template class MlsDeformation<2>;

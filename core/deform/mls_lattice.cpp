@@ -21,26 +21,48 @@ namespace {
 constexpr double kMaxCellsPerPoint = 4.0;
 constexpr double kMinCells = 4096.0;
 
+// The map at a point: its image, and the matrix that carries its normal
+// (normal_transform of the local map's L).
 template <int D>
 struct Sample {
   Vec<D> position;
-  Mat<D> linear;
+  Mat<D> normals;
 };
 
-// What the interpolation needs at a node: where it was, its image and L
-// there, and half the map's Jacobian (the weight of the Taylor blend).
+// What the interpolation blends at a node, in one vector so that the blend
+// of a cell's corners is one weighted sum of them: c = P - H r, H and N,
+// where P is the node's image, r its rest position, H half the map's
+// Jacobian there (the weight of the Taylor blend) and N the matrix that
+// carries normals there. The blended c + H x is the header's third-order
+// position; the blended N carries the normals.
+template <int D>
+using Blend = Eigen::Matrix<double, D + 2 * D * D, 1>;
+
+template <int D>
+Blend<D> make_blend(const Vec<D>& rest, const Vec<D>& image, const Mat<D>& half_jacobian, const Mat<D>& normals) {
+  Blend<D> b;
+  b.template head<D>() = image - half_jacobian * rest;
+  b.template segment<D * D>(D) = half_jacobian.reshaped();
+  b.template tail<D * D>() = normals.reshaped();
+  return b;
+}
+
+template <int D>
+Mat<D> half_jacobian_of(const Blend<D>& b) {
+  return b.template segment<D * D>(D).reshaped(D, D);
+}
+
 template <int D>
 struct Node {
   Vec<D> rest;
-  Vec<D> position;
-  Mat<D> linear;
-  Mat<D> half_jacobian;
+  Vec<D> position;  // its image
+  Blend<D> blend;
 };
 
 template <int D>
 Sample<D> exact_sample(const MlsDeformation<D>& map, const Vec<D>& x) {
   const MlsLocalMap<D> local = map.local_map(x);
-  return {local.position, local.linear};
+  return {local.position, normal_transform<D>(local.linear)};
 }
 
 // A box of cells, `cells` per axis from `origin`, numbered row-major (axis 0 fastest).
@@ -101,17 +123,13 @@ double corner_weight(int v, const Vec<D>& t) {
 }
 
 // The map at x, at t in its cell: positions to third order (the header's
-// mean of the multilinear interpolant and the Taylor blend), L multilinearly.
+// mean of the multilinear interpolant and the Taylor blend), the normals'
+// transform multilinearly.
 template <int D>
 Sample<D> interpolate(const Corners<D>& corners, const Vec<D>& t, const Vec<D>& x) {
-  Sample<D> out{Vec<D>::Zero(), Mat<D>::Zero()};
-  for (int v = 0; v < (1 << D); ++v) {
-    const Node<D>& node = *corners[static_cast<std::size_t>(v)];
-    const double w = corner_weight<D>(v, t);
-    out.position += w * (node.position + node.half_jacobian * (x - node.rest));
-    out.linear += w * node.linear;
-  }
-  return out;
+  Blend<D> sum = corner_weight<D>(0, t) * corners[0]->blend;
+  for (int v = 1; v < (1 << D); ++v) sum += corner_weight<D>(v, t) * corners[static_cast<std::size_t>(v)]->blend;
+  return {sum.template head<D>() + half_jacobian_of<D>(sum) * x, sum.template tail<D * D>().reshaped(D, D)};
 }
 
 // The nodes of a box, for the cells asked.
@@ -166,9 +184,9 @@ Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec
     const Vec<D> t = n.template cast<double>() / static_cast<double>(o.refinement);
     Mat<D> half_jacobian = Mat<D>::Zero();
     for (int v = 0; v < (1 << D); ++v)
-      half_jacobian += corner_weight<D>(v, t) * corners[static_cast<std::size_t>(v)]->half_jacobian;
+      half_jacobian += corner_weight<D>(v, t) * half_jacobian_of<D>(corners[static_cast<std::size_t>(v)]->blend);
     const Sample<D> exact = exact_sample(map, x);
-    r.nodes.nodes.push_back({x, exact.position, exact.linear, half_jacobian});
+    r.nodes.nodes.push_back({x, exact.position, make_blend<D>(x, exact.position, half_jacobian, exact.normals)});
   });
   r.exact.resize(r.box.count(0));
   for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells.array() - 1, [&](const IVec<D>& s) {
@@ -318,19 +336,25 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
 
   // The nodes, mapped exactly, then the corners' Jacobians from their neighbours.
   std::vector<Node<D>> nodes(l.node_list.size());
+  std::vector<Mat<D>> normals(l.corner_nodes);
   pool.parallel_for(l.node_list.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       const Vec<D> x = box.node_position(l.node_list[k]);
       const Sample<D> exact = exact_sample(map, x);
-      nodes[k] = {x, exact.position, exact.linear, Mat<D>::Zero()};
+      nodes[k].rest = x;
+      nodes[k].position = exact.position;
+      if (k < l.corner_nodes) normals[k] = exact.normals;
     }
   });
   pool.parallel_for(l.corner_nodes, [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k)
+    for (std::size_t k = begin; k < end; ++k) {
+      Mat<D> half_jacobian;
       for (int a = 0; a < D; ++a)
-        nodes[k].half_jacobian.col(a) = (nodes[l.neighbours[k][static_cast<std::size_t>(2 * a + 1)]].position -
-                                         nodes[l.neighbours[k][static_cast<std::size_t>(2 * a)]].position) /
-                                        (4.0 * box.spacing);
+        half_jacobian.col(a) = (nodes[l.neighbours[k][static_cast<std::size_t>(2 * a + 1)]].position -
+                                nodes[l.neighbours[k][static_cast<std::size_t>(2 * a)]].position) /
+                               (4.0 * box.spacing);
+      nodes[k].blend = make_blend<D>(nodes[k].rest, nodes[k].position, half_jacobian, normals[k]);
+    }
   });
   stats.nodes = nodes.size();
 
@@ -418,7 +442,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
         }
       }
       mapped.positions[i] = sample.position;
-      mapped.normals[i] = carry_normal<D>(sample.linear, points.normals[i]);
+      mapped.normals[i] = transform_normal<D>(sample.normals, points.normals[i]);
     }
     exact_points[static_cast<std::size_t>(block)] += exact_here;
   });

@@ -13,8 +13,8 @@
 //   benchmark's map at 8 h cells, about 1e-3 h where the multilinear
 //   interpolant errs by 0.07 h. The Jacobians are central differences over
 //   the lattice, so the nodes next to the cells' (a halo) are mapped too.
-//   The linear part L, which carries the normals, is interpolated
-//   multilinearly.
+//   Normals are carried by the multilinear blend of the nodes' normal
+//   transforms (|det L| L^{-T} of the local map's linear part L).
 // - Each lattice cell holding points is checked at its centre: if the
 //   interpolated position is more than `tolerance` from the exact one, or a
 //   handle lies within one cell of it, the cell is split into refinement^D
