@@ -1,5 +1,8 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "core/surface/metrics.hpp"
 #include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
@@ -18,6 +21,23 @@ TEST_CASE("metrics: per-point nearest-neighbour spacing stays with its point") {
   CHECK(s[2] == doctest::Approx(0.5));
   CHECK(s[3] == doctest::Approx(0.5));
   CHECK(nearest_neighbour_spacing_per_point(PointSet<2>{}, h).empty());
+}
+
+TEST_CASE("metrics: per-point spacing with a lone far point: exact, and the same on any thread count") {
+  // A circle of points h apart and one point 1e6 h away: its search would
+  // widen over ever more cells; it scans the points instead.
+  const double h = 0.01;
+  PointSet<2> points = sample_circle(Vec<2>(0.5, 0.5), 0.3, 200);
+  points.add(Vec<2>(1e4, 0.5), Vec<2>(0.0, 1.0));
+  ThreadPool one(1), two(2);
+  const std::vector<double> a = nearest_neighbour_spacing_per_point(points, h, one);
+  const std::vector<double> b = nearest_neighbour_spacing_per_point(points, h, two);
+  REQUIRE(a.size() == points.size());
+  CHECK(a == b);
+  double expected = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j + 1 < points.size(); ++j)
+    expected = std::min(expected, (points.positions[j] - points.positions.back()).norm() / h);
+  CHECK(a.back() == doctest::Approx(expected));
 }
 
 TEST_CASE("metrics: nearest distances between two sets, in units of h") {

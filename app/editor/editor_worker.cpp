@@ -300,9 +300,25 @@ void EditorWorker::publish(std::uint64_t processed) {
                             snapshot->curve = derived_->curve;
                           } else {
                             snapshot->points = points_3d(s.points());
-                            SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing);
-                            snapshot->spacing_h = std::move(quality.spacing_h);
-                            snapshot->spacing = quality.stats;
+                            // While commands wait (a drag), the spacing of points
+                            // that only moved (no resample since) is measured at
+                            // most every quality_interval: on a million points it
+                            // costs as much as a local step.
+                            const bool recent = derived_ && derived_load_ == load_id_ && queue_.size() > 0 &&
+                                                resamples_ == quality_resamples_ &&
+                                                derived_->spacing_h.size() == s.points().size() &&
+                                                now - last_quality_ <
+                                                    std::chrono::duration<double>(options_.quality_interval);
+                            if (recent) {
+                              snapshot->spacing_h = derived_->spacing_h;
+                              snapshot->spacing = derived_->spacing;
+                            } else {
+                              SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing, s.pool());
+                              snapshot->spacing_h = std::move(quality.spacing_h);
+                              snapshot->spacing = quality.stats;
+                              last_quality_ = now;
+                              quality_resamples_ = resamples_;
+                            }
                             if (derived_ && derived_load_ == load_id_) snapshot->curve = derived_->curve;
                           }
                           if constexpr (D == 2) {

@@ -13,11 +13,11 @@ struct SamplingQuality {
   SpacingStats stats;             // min, median, max of spacing_h
 };
 
-// Empty for fewer than two points.
+// Empty for fewer than two points. The points are shared among the pool's threads.
 template <int D>
-SamplingQuality sampling_quality(const PointSet<D>& points, double h);
+SamplingQuality sampling_quality(const PointSet<D>& points, double h, ThreadPool& pool);
 
-extern template SamplingQuality sampling_quality<2>(const PointSet<2>&, double);
-extern template SamplingQuality sampling_quality<3>(const PointSet<3>&, double);
+extern template SamplingQuality sampling_quality<2>(const PointSet<2>&, double, ThreadPool&);
+extern template SamplingQuality sampling_quality<3>(const PointSet<3>&, double, ThreadPool&);
 
 }  // namespace amls::editor

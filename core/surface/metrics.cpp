@@ -13,29 +13,48 @@ namespace amls {
 
 namespace {
 
-// The squared distance from p to the nearest indexed point other than `skip`,
-// searching ever wider from `radius` (the index must hold such a point).
+// The squared distance from p to the nearest of `positions` (indexed by
+// `index`) other than `skip`, searching ever wider from `radius`. Once the
+// search box would hold more index cells than there are points, every point
+// is scanned instead: a lone far point would otherwise make the boxes huge.
 template <int D>
-double nearest_squared(const PointIndex<D>& index, const Vec<D>& p, double radius, std::uint32_t skip) {
+double nearest_squared(const PointIndex<D>& index, const std::vector<Vec<D>>& positions, const Vec<D>& p,
+                       double radius, std::uint32_t skip) {
   double best2 = std::numeric_limits<double>::infinity();
   auto consider = [&](std::uint32_t id, const Vec<D>& q) {
     if (id != skip) best2 = std::min(best2, (q - p).squaredNorm());
   };
-  for (; !std::isfinite(best2); radius *= 4.0) index.for_each_within(p, radius, consider);
+  for (; !std::isfinite(best2); radius *= 4.0) {
+    if (std::pow(2.0 * radius / index.cell_size(), D) > static_cast<double>(positions.size())) {
+      for (std::size_t j = 0; j < positions.size(); ++j) consider(static_cast<std::uint32_t>(j), positions[j]);
+      break;
+    }
+    index.for_each_within(p, radius, consider);
+  }
   return best2;
 }
 
 }  // namespace
 
 template <int D>
-std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h) {
+std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool) {
   if (points.size() < 2) return {};
   PointIndex<D> index;
   index.build(points.positions, Vec<D>::Zero(), 2.0 * h);
   std::vector<double> nearest(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    nearest[i] = std::sqrt(nearest_squared(index, points.positions[i], 2.0 * h, static_cast<std::uint32_t>(i))) / h;
+  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t i = begin; i < end; ++i)
+      nearest[i] = std::sqrt(nearest_squared(index, points.positions, points.positions[i], 2.0 * h,
+                                             static_cast<std::uint32_t>(i))) /
+                   h;
+  });
   return nearest;
+}
+
+template <int D>
+std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h) {
+  ThreadPool one(1);
+  return nearest_neighbour_spacing_per_point(points, h, one);
 }
 
 template <int D>
@@ -69,7 +88,7 @@ DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std:
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   double sum = 0.0;
   for (const Vec<D>& p : from) {
-    const double d = std::sqrt(nearest_squared(index, p, 2.0 * h, kNone)) / h;
+    const double d = std::sqrt(nearest_squared(index, to, p, 2.0 * h, kNone)) / h;
     sum += d;
     s.max = std::max(s.max, d);
   }
@@ -84,6 +103,8 @@ template std::vector<double> nearest_neighbour_spacings<2>(const PointSet<2>&, d
 template std::vector<double> nearest_neighbour_spacings<3>(const PointSet<3>&, double);
 template std::vector<double> nearest_neighbour_spacing_per_point<2>(const PointSet<2>&, double);
 template std::vector<double> nearest_neighbour_spacing_per_point<3>(const PointSet<3>&, double);
+template std::vector<double> nearest_neighbour_spacing_per_point<2>(const PointSet<2>&, double, ThreadPool&);
+template std::vector<double> nearest_neighbour_spacing_per_point<3>(const PointSet<3>&, double, ThreadPool&);
 template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
 template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
 

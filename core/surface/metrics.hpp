@@ -24,6 +24,9 @@ std::vector<double> nearest_neighbour_spacings(const PointSet<D>& points, double
 // The same in the points' order, one value per point (e.g. to colour each point by it).
 template <int D>
 std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h);
+// The same, the points shared among the pool's threads (the same values for any thread count).
+template <int D>
+std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool);
 SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
 
 // Distances from each point of one set to the nearest point of another, in units of h.
