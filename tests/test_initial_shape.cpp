@@ -81,9 +81,11 @@ TEST_CASE("a point-set file opens with h from its spacing, and the coverage of o
 
 TEST_CASE("a point-set file whose resampling at h loses a part says so") {
   amls::test::TempDir dir;
-  // A dense circle sets h; a sparse one far away (10 points) is lost at that h: 10 of 410 points.
+  // A dense circle sets h; a sparse one far away (10 points, 40 Delta apart:
+  // beyond what a widened support, at most 4 Delta, bridges) is lost at that
+  // h: 10 of 410 points.
   PointSet<2> points = sample_circle(Vec<2>(0.0, 0.0), 1.0, 400);
-  const PointSet<2> sparse = sample_circle(Vec<2>(5.0, 0.0), 0.3, 10);
+  const PointSet<2> sparse = sample_circle(Vec<2>(10.0, 0.0), 3.0, 10);
   for (std::size_t i = 0; i < sparse.size(); ++i) points.add(sparse.positions[i], sparse.normals[i]);
   const std::string path = dir.file("two.ply");
   write_point_set(path, points, PointFileFormat::ply_binary_little_endian);
