@@ -90,7 +90,7 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
   if (last_frame) {
     const Grid<D> grid(report.grid_origin.template head<D>(), report.h);
     std::cout << "mesh of step " << steps << ": "
-              << export_surface_mesh(options.mesh_path, *last_frame, grid, AmlsParameters{scene.radius_factor},
+              << export_surface_mesh(options.mesh_path, *last_frame, grid, scene.parameters(),
                                      scene.variant, options.threads)
                      .summary()
               << ", wrote " << options.mesh_path << "\n";

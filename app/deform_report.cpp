@@ -34,6 +34,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
   j["h"] = r.h;
   j["grid_origin"] = {r.grid_origin.x(), r.grid_origin.y(), r.grid_origin.z()};
   j["radius_factor"] = r.radius_factor;
+  // Only when on, as the scene writes it.
+  if (r.widen_support) j["widen_support"] = true;
   j["variant"] = to_string(r.variant);
   j["deformation"] = {{"kind", to_string(r.kind)}, {"alpha", r.alpha}};
   j["resample"] = r.resample ? r.policy.to_string() : "off";
@@ -90,13 +92,14 @@ nlohmann::json to_json(const SceneRunReport& r) {
 }
 
 void print_summary(std::ostream& out, const SceneRunReport& r) {
-  char line[256];
+  char line[512];
   const bool local = r.resample && r.policy.kind == ResamplePolicy::Kind::local;
   const std::string resampling =
       r.resample ? "resample " + r.policy.to_string() + ": " + std::to_string(r.resamples) + " resamples"
                  : std::string("without resampling");
-  std::snprintf(line, sizeof line, "%s: %dD, %s, h = %g, Delta = %gh, %s %s, %zu/%zu steps in %zu stage%s, %s\n",
-                r.scene.c_str(), r.dimension, r.shape_source.c_str(), r.h, r.radius_factor, to_string(r.kind),
+  std::snprintf(line, sizeof line, "%s: %dD, %s, h = %g, Delta = %gh%s, %s %s, %zu/%zu steps in %zu stage%s, %s\n",
+                r.scene.c_str(), r.dimension, r.shape_source.c_str(), r.h, r.radius_factor,
+                r.widen_support ? " (widened where the input is sparse)" : "", to_string(r.kind),
                 to_string(r.variant), r.steps, r.steps_planned, r.stages, r.stages == 1 ? "" : "s",
                 resampling.c_str());
   out << line;

@@ -1,9 +1,14 @@
 #pragma once
-// Small builders shared by the tests: a ready AMLS surface from a point set.
+// Small builders shared by the tests: a ready AMLS surface from a point set,
+// sampled shapes and their measures.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <vector>
 
+#include "core/geometry/kd_tree.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/surface/amls_surface.hpp"
 
 namespace amls::test {
@@ -55,6 +60,35 @@ inline double widest_circle_gap(const std::vector<Vec<2>>& p, const Vec<2>& cent
   double widest = angles.front() + 2.0 * std::numbers::pi - angles.back();
   for (std::size_t i = 1; i < angles.size(); ++i) widest = std::max(widest, angles[i] - angles[i - 1]);
   return widest * radius;
+}
+
+// A unit sphere sampled `dense` points' worth on its upper half and 4 x more
+// sparsely (16 x fewer points) on its lower half.
+inline PointSet<3> half_sparse_sphere(std::size_t dense) {
+  PointSet<3> points;
+  const PointSet<3> fine = sample_sphere(Vec<3>::Zero(), 1.0, dense);
+  const PointSet<3> coarse = sample_sphere(Vec<3>::Zero(), 1.0, dense / 16);
+  for (std::size_t i = 0; i < fine.size(); ++i)
+    if (fine.positions[i].z() > 0.0) points.add(fine.positions[i], fine.normals[i]);
+  for (std::size_t i = 0; i < coarse.size(); ++i)
+    if (coarse.positions[i].z() <= 0.0) points.add(coarse.positions[i], coarse.normals[i]);
+  return points;
+}
+
+// How many of `probes` (points of a surface) have no output point within
+// `reach`: holes.
+inline std::size_t probes_in_holes(const std::vector<Vec<3>>& output, const std::vector<Vec<3>>& probes,
+                                   double reach) {
+  KdTree<3> tree;
+  tree.build(output);
+  std::vector<std::uint32_t> ids;
+  std::vector<double> squared;
+  std::size_t holes = 0;
+  for (const Vec<3>& p : probes) {
+    tree.nearest(p, 1, ids, squared);
+    holes += squared.front() > reach * reach ? 1 : 0;
+  }
+  return holes;
 }
 
 }  // namespace amls::test

@@ -6,7 +6,11 @@
 #include "app/editor/edit_session.hpp"
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
+#include "core/geometry/coverage.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/resample/resample_policy.hpp"
 #include "editor_test_support.hpp"
+#include "surface_fixtures.hpp"
 
 using namespace amls;
 using namespace amls::editor;
@@ -435,4 +439,53 @@ TEST_CASE("a shape sampled at h replays exactly after the grid changed before th
   REQUIRE(session.recording().exact());
   const PointSet<2> replayed = amls::test::replay_with_amls_deform(session.recording());
   CHECK(replayed.positions == session.points().positions);
+}
+
+TEST_CASE("a point set sparse in places opens with widened supports: the session has no gap and replays exactly") {
+  amls::test::TempDir dir;
+  const std::string path = dir.file("half_sparse.ply");
+  write_point_set(path, amls::test::half_sparse_sphere(3000), PointFileFormat::ply_binary_little_endian);
+  InitialShape shape = load_initial_shape(path, 1);
+  CHECK(shape.settings.widen_support);
+  CHECK_FALSE(shape.coverage_loss);
+  CHECK(shape.coverage.find("support widened at") != std::string::npos);
+
+  // Two drag steps: the top pulled up, the bottom held. Each step's resample
+  // closes the sparse half only with widened supports.
+  auto drag_top = [](EditSession<3>& session) {
+    session.add_handle(Vec<3>(0.0, 0.0, 1.0));
+    session.add_handle(Vec<3>(0.0, 0.0, -1.0));
+    session.begin_drag();
+    std::vector<Vec<3>> to = session.handles();
+    for (double z : {1.05, 1.1}) {
+      to[0].z() = z;
+      REQUIRE(session.move_handles(to, kRunAll).stepped);
+    }
+  };
+  auto gap_fraction = [](EditSession<3>& session) {
+    return static_cast<double>(unsurrounded_points(session.points(), session.settings().spacing, kGapReach,
+                                                   session.pool())) /
+           static_cast<double>(session.points().size());
+  };
+  EditSession<3> widened(shape, 1);
+  drag_top(widened);
+  CHECK(gap_fraction(widened) < 0.01);
+  REQUIRE(widened.recording().exact());
+  CHECK(recorded_scene(widened.recording(), dir.file("s.json"), "s").widen_support);
+  const PointSet<3> replayed = amls::test::replay_with_amls_deform(widened.recording());
+  CHECK(replayed.positions == widened.points().positions);
+  CHECK(replayed.normals == widened.points().normals);
+
+  shape.settings.widen_support = false;
+  EditSession<3> uniform(shape, 1);
+  drag_top(uniform);
+  // Where the sparse half kept its place (the bottom handle held it), no
+  // part of the sphere is more than 1.5 h from the session's points; with one
+  // Delta most of it is.
+  std::vector<Vec<3>> probes;
+  for (const Vec<3>& p : sample_sphere(Vec<3>::Zero(), 1.0, 2000).positions)
+    if (p.z() < -0.5) probes.push_back(p);
+  const double reach = 1.5 * shape.settings.spacing;
+  CHECK(amls::test::probes_in_holes(widened.points().positions, probes, reach) == 0);
+  CHECK(amls::test::probes_in_holes(uniform.points().positions, probes, reach) > probes.size() / 2);
 }

@@ -50,6 +50,7 @@ TEST_CASE("built-in shapes: the paper's circle and a sphere, with their scene so
   CHECK(std::get<SceneShape<2>>(circle.source).type == ShapeType::circle);
   CHECK(std::get<SceneShape<2>>(circle.source).points == 250);
   CHECK(circle.settings.spacing == 0.024);
+  CHECK_FALSE(circle.settings.widen_support);  // the paper's shapes keep one Delta
   const InitialShape sphere = make_sphere(2.0, 500, 0.1);
   CHECK(sphere.dimension() == 3);
   CHECK(std::get<SceneShape<3>>(sphere.source).type == ShapeType::sphere);
@@ -69,6 +70,7 @@ TEST_CASE("a point-set file opens with h from its spacing, and the coverage of o
   CHECK(source.type == ShapeType::file);
   CHECK(source.resolved_file == path);
   CHECK(shape.settings.spacing == doctest::Approx(2.0 * 3.14159265 * 0.25 / 200).epsilon(0.01));
+  CHECK(shape.settings.widen_support);
   CHECK(shape.coverage == "resampled at h: 100.00 % of the 200 input points covered, 100.00 % of the " +
                               std::to_string(resample_point_set(to_2d(shape.points), [&] {
                                 PointSetResampling o;
@@ -81,9 +83,11 @@ TEST_CASE("a point-set file opens with h from its spacing, and the coverage of o
 
 TEST_CASE("a point-set file whose resampling at h loses a part says so") {
   amls::test::TempDir dir;
-  // A dense circle sets h; a sparse one far away (10 points) is lost at that h: 10 of 410 points.
+  // A dense circle sets h; a sparse one far away (10 points, 40 Delta apart:
+  // beyond what a widened support, at most 4 Delta, bridges) is lost at that
+  // h: 10 of 410 points.
   PointSet<2> points = sample_circle(Vec<2>(0.0, 0.0), 1.0, 400);
-  const PointSet<2> sparse = sample_circle(Vec<2>(5.0, 0.0), 0.3, 10);
+  const PointSet<2> sparse = sample_circle(Vec<2>(10.0, 0.0), 3.0, 10);
   for (std::size_t i = 0; i < sparse.size(); ++i) points.add(sparse.positions[i], sparse.normals[i]);
   const std::string path = dir.file("two.ply");
   write_point_set(path, points, PointFileFormat::ply_binary_little_endian);
@@ -106,7 +110,7 @@ TEST_CASE("a scene's start: shape, grid, parameters and the first stage's handle
   amls::test::TempDir dir;
   const std::string path = dir.file("s.json");
   write_text(path, R"({"dimension": 2, "name": "clover", "shape": {"type": "circle", "center": [0.5, 0], "radius": 2,
-    "points": 100}, "grid": {"cells": 40}, "radius_factor": 2.5, "variant": "interpolated",
+    "points": 100}, "grid": {"cells": 40}, "radius_factor": 2.5, "widen_support": true, "variant": "interpolated",
     "deformation": {"kind": "affine", "alpha": 2}, "stages": [{"handles": [[2.5, 0], [0.5, 2]],
     "targets": [{"steps": 3, "handles": [[3, 0], [0.5, 2]]}]}]})");
   const InitialShape shape = load_initial_shape(path, 1);
@@ -116,6 +120,7 @@ TEST_CASE("a scene's start: shape, grid, parameters and the first stage's handle
   CHECK(std::get<SceneShape<2>>(shape.source).center.x() == 0.5);
   CHECK(shape.settings.spacing == 1.0 / 40);
   CHECK(shape.settings.radius_factor == 2.5);
+  CHECK(shape.settings.widen_support);
   CHECK(shape.settings.variant == Variant::interpolated);
   CHECK(shape.settings.kind == MlsKind::affine);
   CHECK(shape.settings.alpha == 2.0);

@@ -11,8 +11,11 @@
 #include "core/geometry/sample_spacing.hpp"
 #include "core/geometry/shapes.hpp"
 #include "core/surface/local_support.hpp"
+#include "surface_fixtures.hpp"
 
 using namespace amls;
+using amls::test::half_sparse_sphere;
+using amls::test::probes_in_holes;
 
 TEST_CASE("resampling a circle once puts the new points on it, evenly spaced") {
   PointSetResampling options;
@@ -133,37 +136,6 @@ TEST_CASE("a resampling whose output would be too large is refused before any gr
                        std::invalid_argument);
 }
 
-namespace {
-
-// A unit sphere sampled `dense` points' worth on its upper half and 4 x more
-// sparsely (16 x fewer points) on its lower half.
-PointSet<3> half_sparse_sphere(std::size_t dense) {
-  PointSet<3> points;
-  const PointSet<3> fine = sample_sphere(Vec<3>::Zero(), 1.0, dense);
-  const PointSet<3> coarse = sample_sphere(Vec<3>::Zero(), 1.0, dense / 16);
-  for (std::size_t i = 0; i < fine.size(); ++i)
-    if (fine.positions[i].z() > 0.0) points.add(fine.positions[i], fine.normals[i]);
-  for (std::size_t i = 0; i < coarse.size(); ++i)
-    if (coarse.positions[i].z() <= 0.0) points.add(coarse.positions[i], coarse.normals[i]);
-  return points;
-}
-
-// How many of `probes` directions (unit vectors) have no output point within
-// `reach` of the unit sphere's point there: holes.
-std::size_t probes_in_holes(const std::vector<Vec<3>>& output, const std::vector<Vec<3>>& probes, double reach) {
-  KdTree<3> tree;
-  tree.build(output);
-  std::vector<std::uint32_t> ids;
-  std::vector<double> squared;
-  std::size_t holes = 0;
-  for (const Vec<3>& p : probes) {
-    tree.nearest(p, 1, ids, squared);
-    holes += squared.front() > reach * reach ? 1 : 0;
-  }
-  return holes;
-}
-
-}  // namespace
 
 TEST_CASE("supports widened where the input is sparse close a sphere sampled 4 x more sparsely on one half") {
   const PointSet<3> input = half_sparse_sphere(3000);

@@ -18,7 +18,7 @@ namespace {
 const char* kGood2d = R"({
   "dimension": 2, "name": "t",
   "shape": {"type": "circle", "center": [0.5, 0.5], "radius": 0.25, "points": 100},
-  "grid": {"cells": 64}, "radius_factor": 2.5, "variant": "interpolated",
+  "grid": {"cells": 64}, "radius_factor": 2.5, "widen_support": true, "variant": "interpolated",
   "deformation": {"kind": "similarity", "alpha": 1.5},
   "stages": [
     {"handles": [[0.75, 0.5], [0.25, 0.5]],
@@ -59,6 +59,8 @@ TEST_CASE("scene: a good scene is read with every field, and written back to the
   CHECK(s.shape.points == 100);
   CHECK(s.h() == 1.0 / 64);
   CHECK(s.radius_factor == 2.5);
+  CHECK(s.widen_support);
+  CHECK(s.parameters().widen_support);
   CHECK(s.variant == Variant::interpolated);
   CHECK(s.kind == MlsKind::similarity);
   CHECK(s.alpha == 1.5);
@@ -92,7 +94,9 @@ TEST_CASE("scene: bad scenes are rejected with a message naming the file and wha
   TempDir dir;
   CHECK(error_of(edited("\"variant\"", "\"variants\""), dir) ==
         dir.file("scene.json") + ": variants: unknown key (expected dimension, name, description, grid, shape, "
-                                 "radius_factor, variant, deformation or stages)");
+                                 "radius_factor, widen_support, variant, deformation or stages)");
+  CHECK(error_of(edited("\"widen_support\": true", "\"widen_support\": 1"), dir) ==
+        dir.file("scene.json") + ": widen_support: expected true or false, got 1");
   CHECK(error_of(edited("\"type\": \"circle\"", "\"type\": \"square\""), dir)
             .find("shape.type: unknown shape 'square' (expected circle, ellipse, sphere, torus, rounded_box or file)") !=
         std::string::npos);

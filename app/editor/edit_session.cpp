@@ -87,7 +87,7 @@ std::unique_ptr<DeformingSurface<D>> EditSession<D>::make_surface(const SurfaceS
   validate(settings);
   // The grid `amls deform` builds for the scene: anchored by the initial shape's points.
   const Grid<D> grid = resampling_grid(initial_.points, settings.spacing, settings.radius_factor);
-  return std::make_unique<DeformingSurface<D>>(grid, AmlsParameters{settings.radius_factor}, settings.variant,
+  return std::make_unique<DeformingSurface<D>>(grid, settings.parameters(), settings.variant,
                                                threads_);
 }
 
@@ -277,7 +277,7 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
   // resampling was off, or another policy), then each step maps them and
   // resamples where strained.
   if (!local_)
-    local_ = std::make_unique<LocalDeformingSurface<D>>(surface_->grid(), AmlsParameters{settings_.radius_factor},
+    local_ = std::make_unique<LocalDeformingSurface<D>>(surface_->grid(), settings_.parameters(),
                                                         settings_.variant, threads_);
   const bool start = !local_in_sync();
   EditResult result;

@@ -10,6 +10,7 @@
 #include "core/io/file_format.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/util/parameter_ranges.hpp"
 
 namespace amls::editor {
 
@@ -63,14 +64,21 @@ double spacing_of(const PointSet<D>& points, const std::string& path) {
   }
 }
 
-// One resampling at the shape's h, as `amls resample` would do it, and its coverage of the points.
+// One resampling at the shape's h and with its supports, as `amls resample`
+// would do it, and its coverage of the points.
 template <int D>
 void measure_coverage_of(InitialShape& shape, const PointSet<D>& points) {
   PointSetResampling options;
   options.spacing = shape.settings.spacing;
   options.radius_factor = shape.settings.radius_factor;
-  const Coverage c = resample_point_set(points, options).coverage;
+  options.widen_support = shape.settings.widen_support;
+  const ResampledPointSet<D> resampled = resample_point_set(points, options);
+  const Coverage& c = resampled.coverage;
   shape.coverage = "resampled at h: " + c.summary();
+  if (resampled.widening.widened_points > 0)
+    shape.coverage += "; support widened at " + std::to_string(resampled.widening.widened_points) + " of " +
+                      std::to_string(points.size()) + " points where the input is sparse (up to " +
+                      format_number(resampled.widening.widest) + " Delta)";
   shape.coverage_loss = c.clear_loss();
   if (shape.coverage_loss) shape.coverage = shape.name + ": " + c.loss_message();
 }
@@ -100,6 +108,8 @@ InitialShape load_point_set_file(const std::string& path) {
   const double spacing =
       loaded.dimension == 2 ? spacing_of(to_2d(loaded.points), path) : spacing_of(loaded.points, path);
   shape.settings.spacing = round_significant(spacing, 3);
+  // Real data is often sparse in places: widen there, as `amls resample` does.
+  shape.settings.widen_support = true;
   shape.points = std::move(loaded.points);
   shape.name = std::filesystem::path(path).filename().string();
   shape.warnings = std::move(loaded.warnings);

@@ -18,8 +18,10 @@ InitialShape make_sphere(double radius, std::size_t points, double spacing);
 InitialShape default_shape(int dimension);
 
 // A point set with oriented normals (.ply, .xyz), 2D or 3D; h by the rule of
-// core/geometry/sample_spacing.hpp (3 significant digits), and the coverage of
-// one resampling at h measured as `amls resample` measures it. Throws
+// core/geometry/sample_spacing.hpp (3 significant digits), supports widened
+// where the points are sparse (AmlsParameters::widen_support), and the
+// coverage of one resampling at h measured as `amls resample` measures it,
+// with the same supports. Throws
 // std::runtime_error naming the file for a file that cannot be read, has too
 // few points or has no normals.
 InitialShape load_point_set_file(const std::string& path);

@@ -21,6 +21,7 @@ InitialShape start_from_scene(const Scene<D>& scene, int threads) {
   start.source = scene.shape;
   start.settings.spacing = scene.h();
   start.settings.radius_factor = scene.radius_factor;
+  start.settings.widen_support = scene.widen_support;
   start.settings.variant = scene.variant;
   start.settings.kind = scene.kind;
   start.settings.alpha = scene.alpha;

@@ -124,6 +124,7 @@ Scene<D> recorded_scene(const SessionRecording<D>& recording, const std::string&
     scene.shape.spacing = recording.sampled_at();
   scene.grid_spacing = s.spacing;
   scene.radius_factor = s.radius_factor;
+  scene.widen_support = s.widen_support;
   scene.variant = s.variant;
   scene.kind = s.kind;
   scene.alpha = s.alpha;

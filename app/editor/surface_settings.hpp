@@ -16,6 +16,10 @@ namespace amls::editor {
 struct SurfaceSettings {
   double spacing = 0.024;      // grid spacing h
   double radius_factor = 3.0;  // Delta / h
+  // Each point's own support, wider where the input is sparse
+  // (AmlsParameters::widen_support): on for a point set opened on its own, as
+  // `amls resample` does, else the scene's. Fixed for a session.
+  bool widen_support = false;
   Variant variant = Variant::exact;
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;
@@ -24,6 +28,13 @@ struct SurfaceSettings {
   ResamplePolicy policy;
 
   bool operator==(const SurfaceSettings&) const = default;
+  // The AMLS parameters of the surface these settings define.
+  AmlsParameters parameters() const {
+    AmlsParameters p;
+    p.radius_factor = radius_factor;
+    p.widen_support = widen_support;
+    return p;
+  }
   // Whether the grid (h, Delta / h) differs, which needs a new surface.
   bool same_grid(const SurfaceSettings& o) const { return spacing == o.spacing && radius_factor == o.radius_factor; }
 };

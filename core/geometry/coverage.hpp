@@ -33,10 +33,10 @@ inline constexpr double kLeastInputCovered = 0.99;
 inline constexpr double kLeastOutputOnInput = 0.95;
 // A closed output right after resampling is surrounded within 2.2 h at every
 // point (ResamplePolicy::max_gap); beyond 2.5 h it is torn. Real files leave
-// some of their output in gaps: up to 8.3 % on CGAL's building scan, whose
-// rims are long, and 12.6 % on the fandisk mesh, at its sharp edges
-// (docs/real-data.md); a torn output most of it (80 % in
-// tests/test_point_set_resampling.cpp), the radar scan with one Delta 21.5 %.
+// some of their output in gaps: up to 8.2 % on CGAL's building scan, whose
+// rims are long, at most 0.01 % on its meshes (docs/real-data.md); a torn
+// output most of it (80 % in tests/test_point_set_resampling.cpp), the radar
+// scan with one Delta 21.5 %.
 inline constexpr double kGapReach = 2.5;
 inline constexpr double kMostOutputInGaps = 0.15;
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -20,18 +21,25 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Normals within 120 degrees: one sheet (SamplingQuality).
 constexpr double kSameSheetCos = -0.5;
-// 3D: the cosine of the widest empty sector a surrounded point may have (150 degrees; SamplingQuality).
-constexpr double kWidestSectorCos = -0.8660254037844386;
+// 3D: the widest empty sector a surrounded point may have (SamplingQuality).
+constexpr double kWidestSector = 150.0 * std::numbers::pi / 180.0;
 
 // A same-sheet neighbour as seen from a point: its squared distance and its
 // direction in the point's tangent space: 2D, the side of the normal line
-// (x = +1 or -1); 3D, a unit vector (x, y) in a tangent basis, with `order`
-// increasing with its angle (a pseudo-angle: sorting needs no atan2).
+// (side = +1 or -1); 3D, its angle in a tangent basis, in (-pi, pi].
+//
+// The 3D sectors are differences of sorted angles, so that more neighbours
+// can only narrow them and a point surrounded within r stays surrounded
+// within any larger r. A pseudo-angle such as 1 - cos, sorted, with the
+// sectors tested by the sign of a cross product, is not: near the basis'
+// axes it cannot tell directions less than about 1e-8 radians apart (their
+// cosines round to the same number), so two neighbours in one line (at h and
+// 2 h along a flat face) sorted either way, and the cross product of a pair
+// sorted the wrong way round read as an empty sector of almost 360 degrees.
 struct Neighbour {
   double distance2 = 0.0;
-  double x = 0.0;
-  double y = 0.0;
-  double order = 0.0;
+  double side = 0.0;
+  double angle = 0.0;
 };
 
 // The tangent space of a point with normal n: 2D, the tangent t (rows: t);
@@ -60,44 +68,35 @@ std::optional<Neighbour> neighbour_at(const Vec<D>& d, const Eigen::Matrix<doubl
   const Eigen::Matrix<double, D - 1, 1> t = basis * d;
   if constexpr (D == 2) {
     if (t[0] == 0.0) return std::nullopt;
-    nb.x = t[0] > 0.0 ? 1.0 : -1.0;
+    nb.side = t[0] > 0.0 ? 1.0 : -1.0;
   } else {
-    const double length = t.norm();
-    if (length == 0.0) return std::nullopt;
-    nb.x = t[0] / length;
-    nb.y = t[1] / length;
-    nb.order = nb.y >= 0.0 ? 1.0 - nb.x : 3.0 + nb.x;
+    if (t[0] == 0.0 && t[1] == 0.0) return std::nullopt;
+    nb.angle = std::atan2(t[1], t[0]);
   }
   return nb;
 }
 
-// 3D: whether the angle from direction a counter-clockwise to b is below 150 degrees.
-bool narrow(const Neighbour& a, const Neighbour& b) {
-  const double cross = a.x * b.y - a.y * b.x;
-  const double dot = a.x * b.x + a.y * b.y;
-  return cross >= 0.0 && dot > kWidestSectorCos;
-}
-
-// 3D: whether the neighbours (sorted by order) within squared distance r2
-// surround the point: at least three, and no empty sector of 150 degrees.
+// 3D: whether the neighbours (sorted by angle) within squared distance r2
+// surround the point: at least three, and no empty sector of 150 degrees,
+// the one from the last round to the first included.
 bool surrounded_within(std::span<const Neighbour> by_angle, double r2) {
   const Neighbour* first = nullptr;
   const Neighbour* previous = nullptr;
   int count = 0;
   for (const Neighbour& nb : by_angle) {
     if (nb.distance2 > r2) continue;
-    if (previous && !narrow(*previous, nb)) return false;
+    if (previous && nb.angle - previous->angle >= kWidestSector) return false;
     if (!first) first = &nb;
     previous = &nb;
     ++count;
   }
-  return count >= 3 && narrow(*previous, *first);
+  return count >= 3 && first->angle + 2.0 * std::numbers::pi - previous->angle < kWidestSector;
 }
 
 // 3D: sorts neighbours by their angle in the tangent plane.
 void sort_by_angle(std::vector<Neighbour>& neighbours) {
   std::sort(neighbours.begin(), neighbours.end(),
-            [](const Neighbour& a, const Neighbour& b) { return a.order < b.order; });
+            [](const Neighbour& a, const Neighbour& b) { return a.angle < b.angle; });
 }
 
 // Whether `neighbours` surround the point (SamplingQuality::gap): 2D, one on
@@ -106,7 +105,7 @@ template <int D>
 bool surrounded(std::vector<Neighbour>& neighbours) {
   if constexpr (D == 2) {
     bool plus = false, minus = false;
-    for (const Neighbour& nb : neighbours) (nb.x > 0.0 ? plus : minus) = true;
+    for (const Neighbour& nb : neighbours) (nb.side > 0.0 ? plus : minus) = true;
     return plus && minus;
   } else {
     sort_by_angle(neighbours);
@@ -125,7 +124,7 @@ double gap2_above(std::vector<Neighbour>& neighbours, std::vector<double>& dista
     double plus = kInfinity;
     double minus = kInfinity;
     for (const Neighbour& nb : neighbours) {
-      double& side = nb.x > 0.0 ? plus : minus;
+      double& side = nb.side > 0.0 ? plus : minus;
       side = std::min(side, nb.distance2);
     }
     return std::max({plus, minus, largest});

@@ -103,6 +103,11 @@ void check_finite_numbers(const json& j, const Place& at) {
     for (auto it = j.begin(); it != j.end(); ++it) check_finite_numbers(it.value(), at.key(it.key()));
 }
 
+bool as_bool(const json& j, const Place& at) {
+  if (!j.is_boolean()) at.fail("expected true or false, got " + (j.is_number() ? j.dump() : type_name(j)));
+  return j.get<bool>();
+}
+
 std::string as_string(const json& j, const Place& at) {
   if (!j.is_string()) at.fail("expected a string, got " + type_name(j));
   return j.get<std::string>();
@@ -372,6 +377,7 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
   check_point_estimate(scene, root.key("shape"));
   if (const json* v = r.find("radius_factor"))
     scene.radius_factor = as_in_range(*v, root.key("radius_factor"), ranges::kRadiusFactor);
+  if (const json* v = r.find("widen_support")) scene.widen_support = as_bool(*v, root.key("widen_support"));
   if (const json* v = r.find("variant")) {
     try {
       scene.variant = parse_variant(as_string(*v, root.key("variant")));
@@ -493,6 +499,8 @@ json to_json(const Scene<D>& scene) {
   j["shape"] = shape;
   j["grid"] = scene.grid_spacing > 0.0 ? json{{"spacing", scene.grid_spacing}} : json{{"cells", scene.grid_cells}};
   j["radius_factor"] = scene.radius_factor;
+  // Only when on: a scene with one Delta reads as it did before the key existed.
+  if (scene.widen_support) j["widen_support"] = true;
   j["variant"] = to_string(scene.variant);
   j["deformation"] = {{"kind", to_string(scene.kind)}, {"alpha", scene.alpha}};
   json stages = json::array();

@@ -46,11 +46,22 @@ struct Scene {
   // (core/geometry/sample_spacing.hpp).
   bool grid_from_file = false;
   double radius_factor = 3.0;
+  // Each point's own support, wider where the input is sparse
+  // (AmlsParameters::widen_support); the editor sets it for a point set it
+  // opens on its own, as `amls resample` widens.
+  bool widen_support = false;
   Variant variant = Variant::exact;
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;
   DeformationHistory<D> history;
 
+  // The AMLS parameters the scene's surface is defined with.
+  AmlsParameters parameters() const {
+    AmlsParameters p;
+    p.radius_factor = radius_factor;
+    p.widen_support = widen_support;
+    return p;
+  }
   double h() const { return grid_spacing > 0.0 ? grid_spacing : 1.0 / grid_cells; }
   // The spacing of the initial samples (the shape's own, else h).
   double sample_spacing() const { return shape.spacing > 0.0 ? shape.spacing : h(); }

@@ -95,6 +95,7 @@ class SceneRunner {
     report_.name = scene_.name;
     report_.h = scene_.h();
     report_.radius_factor = scene_.radius_factor;
+    report_.widen_support = scene_.widen_support;
     report_.variant = scene_.variant;
     report_.kind = scene_.kind;
     report_.alpha = scene_.alpha;
@@ -119,7 +120,7 @@ class SceneRunner {
     const Grid<D> grid = resampling_grid(shape.points, scene_.h(), scene_.radius_factor);
     report_.grid_origin.template head<D>() = grid.origin();
     report_.points_initial = report_.points_min = report_.points_max = shape.points.size();
-    const AmlsParameters parameters{scene_.radius_factor};
+    const AmlsParameters parameters = scene_.parameters();
     if (options_.resample && options_.policy.kind == ResamplePolicy::Kind::local) {
       local_.emplace(grid, parameters, scene_.variant, options_.threads, options_.local);
       local_->set_points(std::move(shape.points));

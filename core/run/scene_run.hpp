@@ -81,6 +81,7 @@ struct SceneRunReport {
   double h = 0.0;
   Vec<3> grid_origin = Vec<3>::Zero();
   double radius_factor = 3.0;
+  bool widen_support = false;  // the scene's (AmlsParameters::widen_support)
   Variant variant = Variant::exact;
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;

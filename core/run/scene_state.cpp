@@ -45,7 +45,7 @@ SceneState<D> scene_state_after(const Scene<D>& scene, std::size_t steps, int th
                       total,
                       std::move(*frame),
                       Grid<D>(origin, report.h),
-                      AmlsParameters{report.radius_factor},
+                      scene.parameters(),
                       handles_after(scene.history, steps),
                       report.warnings};
   return state;

@@ -19,7 +19,7 @@ struct SceneState {
   std::size_t total_steps = 0;  // of the scene's whole history
   PointSet<D> points;           // R_K
   Grid<D> grid;                 // the run's grid (spacing h)
-  AmlsParameters parameters;    // as the run used them (radius factor)
+  AmlsParameters parameters;    // as the run used them (the scene's)
   std::vector<Vec<D>> handles;  // the handle positions after K steps (none without stages)
   std::vector<std::string> warnings;
 };
