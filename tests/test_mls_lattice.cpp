@@ -26,6 +26,16 @@ MlsDeformation<3> drag(double pull) {
   return MlsDeformation<3>(from, to);
 }
 
+// The drag's sphere at rest, and lattices of 8 h over it.
+struct RestSphere {
+  double h = 0.004;
+  PointSet<3> rest = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
+  ThreadPool pool{2};
+
+  MlsLatticeOptions options(double tolerance_in_h) const { return {8.0 * h, tolerance_in_h * h, 4, true}; }
+  MlsRestLattice<3> lattice(double tolerance_in_h) { return MlsRestLattice<3>(rest, options(tolerance_in_h), pool); }
+};
+
 }  // namespace
 
 TEST_CASE("MLS lattice: positions within the tolerance of the exact map, normals close, any thread count") {
@@ -129,34 +139,31 @@ TEST_CASE("MLS deformation by the polar iteration: the SVD's map to rounding") {
 }
 
 TEST_CASE("MLS rest lattice: built once over the rest points, maps them to every step's handles near the tolerance") {
-  const double h = 0.004;
-  const PointSet<3> rest = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
-  ThreadPool pool(2);
-  const MlsLatticeOptions options{8.0 * h, 0.001 * h, 4, true};
-  const MlsRestLattice<3> lattice(rest, options, pool);
+  RestSphere sphere;
+  const MlsRestLattice<3> lattice = sphere.lattice(0.001);
   const std::vector<Vec<3>> from = drag(0.0).from();
   double worst = 0.0;
   for (const int step : {1, 5, 10}) {
-    const MlsDeformation<3> map(from, drag(0.5 * h * step).to());
-    PointSet<3> mapped, exact = rest;
+    const MlsDeformation<3> map(from, drag(0.5 * sphere.h * step).to());
+    PointSet<3> mapped, exact = sphere.rest;
     std::vector<float> strain;
-    const MlsLatticeStats stats = lattice.map(map, rest, mapped, &strain, nullptr, pool);
-    map.apply(exact, pool);
+    const MlsLatticeStats stats = lattice.map(map, sphere.rest, mapped, &strain, nullptr, sphere.pool);
+    map.apply(exact, sphere.pool);
     CHECK_FALSE(stats.fell_back);
-    CHECK(stats.exact_points < rest.size() / 10);
+    CHECK(stats.exact_points < sphere.rest.size() / 10);
     CHECK(stats.nodes > stats.cells);  // the corners and their halo
-    REQUIRE(mapped.size() == rest.size());
-    for (std::size_t i = 0; i < rest.size(); ++i)
+    REQUIRE(mapped.size() == sphere.rest.size());
+    for (std::size_t i = 0; i < sphere.rest.size(); ++i)
       worst = std::max(worst, (mapped.positions[i] - exact.positions[i]).norm());
   }
   // The check at the cells' centres bounds the error there; between centres
   // it may be somewhat larger.
-  MESSAGE("largest position error over the three maps " << worst / h << " h");
-  CHECK(worst <= 3.0 * 0.001 * h);
-  PointSet<3> fewer = rest, out;
+  MESSAGE("largest position error over the three maps " << worst / sphere.h << " h");
+  CHECK(worst <= 3.0 * 0.001 * sphere.h);
+  PointSet<3> fewer = sphere.rest, out;
   fewer.positions.pop_back();
   fewer.normals.pop_back();
-  CHECK_THROWS_AS(lattice.map(drag(h), fewer, out, nullptr, nullptr, pool), std::invalid_argument);
+  CHECK_THROWS_AS(lattice.map(drag(sphere.h), fewer, out, nullptr, nullptr, sphere.pool), std::invalid_argument);
 }
 
 // How many of the 8 h cells holding `points` (aligned as the lattice's)
@@ -186,39 +193,34 @@ std::size_t multilinear_failures(const MlsDeformation<3>& map, const PointSet<3>
 }
 
 TEST_CASE("MLS rest lattice: third-order interpolation refines a few cells where multilinear would refine many") {
-  const double h = 0.004;
-  const PointSet<3> rest = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
-  ThreadPool pool(2);
-  const MlsLatticeOptions options{8.0 * h, 0.002 * h, 4, true};
-  const MlsRestLattice<3> lattice(rest, options, pool);
-  const MlsDeformation<3> map(drag(0.0).from(), drag(10.0 * h).to());
+  RestSphere sphere;
+  const MlsLatticeOptions options = sphere.options(0.002);
+  const MlsDeformation<3> map(drag(0.0).from(), drag(10.0 * sphere.h).to());
   PointSet<3> mapped;
-  const MlsLatticeStats stats = lattice.map(map, rest, mapped, nullptr, nullptr, pool);
-  const std::size_t multilinear = multilinear_failures(map, rest, options.spacing, options.tolerance);
+  const MlsLatticeStats stats = sphere.lattice(0.002).map(map, sphere.rest, mapped, nullptr, nullptr, sphere.pool);
+  const std::size_t multilinear = multilinear_failures(map, sphere.rest, options.spacing, options.tolerance);
   MESSAGE(stats.refined_cells << " of " << stats.cells << " cells refined; multilinear would fail " << multilinear);
   CHECK(multilinear > 4 * stats.refined_cells);
 }
 
 TEST_CASE("MLS rest lattice: the strain added is the step's, from the last map's node images") {
-  const double h = 0.004;
-  const PointSet<3> rest = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
-  ThreadPool pool(2);
-  const MlsRestLattice<3> lattice(rest, MlsLatticeOptions{8.0 * h, 0.001 * h, 4, true}, pool);
+  RestSphere sphere;
+  const MlsRestLattice<3> lattice = sphere.lattice(0.001);
   const std::vector<Vec<3>> from = drag(0.0).from();
   MlsNodeImages<3> last;
   std::vector<float> summed;
   PointSet<3> mapped;
   // Out by 6 h and back in one step: the whole map ends at the identity, each step strained.
-  lattice.map(MlsDeformation<3>(from, drag(6.0 * h).to()), rest, mapped, &summed, &last, pool);
+  lattice.map(MlsDeformation<3>(from, drag(6.0 * sphere.h).to()), sphere.rest, mapped, &summed, &last, sphere.pool);
   REQUIRE_FALSE(last.empty());
   const float out = *std::max_element(summed.begin(), summed.end());
-  lattice.map(MlsDeformation<3>(from, from), rest, mapped, &summed, &last, pool);
+  lattice.map(MlsDeformation<3>(from, from), sphere.rest, mapped, &summed, &last, sphere.pool);
   const float back = *std::max_element(summed.begin(), summed.end());
   MESSAGE("largest strain after the pull " << out << ", after the return " << back);
   CHECK(out > 1e-3F);
   CHECK(back > 1.8F * out);
   // The same second map measured from the rest state: no strain at all.
   std::vector<float> from_rest;
-  lattice.map(MlsDeformation<3>(from, from), rest, mapped, &from_rest, nullptr, pool);
+  lattice.map(MlsDeformation<3>(from, from), sphere.rest, mapped, &from_rest, nullptr, sphere.pool);
   CHECK(*std::max_element(from_rest.begin(), from_rest.end()) < 1e-9F);
 }
