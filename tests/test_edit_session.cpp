@@ -368,7 +368,7 @@ TEST_CASE("under local a session resamples where strained, keeps the strain thro
   const SessionRecording<2>& recording = session.recording();
   REQUIRE(recording.exact());
   CHECK(recording.replay_arguments() == "--resample local");
-  // The session's surface keeps its points in its index's order; the set is the replay's.
+  // The points as a set are the replay's (the session need not keep them in the replay's order).
   auto sorted = [](std::vector<Vec<2>> v) {
     std::sort(v.begin(), v.end(), [](const Vec<2>& a, const Vec<2>& b) {
       return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
@@ -377,6 +377,10 @@ TEST_CASE("under local a session resamples where strained, keeps the strain thro
   };
   const PointSet<2> replayed = amls::test::replay_with_amls_deform(recording);
   CHECK(sorted(replayed.positions) == sorted(session.points().positions));
+  // The surface to evaluate takes the local loop's points only when asked for, and then holds them all.
+  const std::vector<Vec<2>> local_points = session.points().positions;
+  CHECK(sorted(session.evaluable_surface().points().positions) == sorted(local_points));
+  CHECK(session.points().positions == local_points);  // in the same order as before
   // An undo restores the points with their strain: the next step runs locally, without a whole resample.
   const PointSet<2> after = session.points();
   REQUIRE(session.undo());

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "app/editor/editor_worker.hpp"
+#include "app/editor/sampling_quality.hpp"
 #include "app/editor/scene_start.hpp"
 #include "core/io/point_set_io.hpp"
 #include "editor_test_support.hpp"
@@ -396,4 +398,50 @@ TEST_CASE("handle commands before anything is loaded are refused politely") {
   worker.post(command::AddHandle{Vec<3>::Zero()});
   REQUIRE(worker.wait_until_idle(kPatience));
   CHECK(has_message(worker.take_messages(), Message::Level::warning, "Nothing is loaded"));
+}
+
+TEST_CASE("a move's snapshot comes before its spacing is measured, which follows once the queue is empty") {
+  std::mutex mutex;
+  std::vector<std::shared_ptr<const Snapshot>> published;
+  WorkerOptions options;
+  EditorWorker* observed = nullptr;
+  options.on_publish = [&] {
+    std::lock_guard lock(mutex);
+    if (observed) published.push_back(observed->snapshot());
+  };
+  EditorWorker worker(options);
+  {
+    std::lock_guard lock(mutex);
+    observed = &worker;
+  }
+  worker.post(command::LoadShape{3, 1.0, 4000, 0.06});
+  worker.post(command::SetResampling{false, ResamplePolicy{}});  // the point count stays: the last spacing carries
+  worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
+  worker.post(command::BeginDrag{});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto loaded = worker.snapshot();
+  REQUIRE(loaded->spacing_version == loaded->points_version);
+  {
+    std::lock_guard lock(mutex);
+    published.clear();
+  }
+  const std::uint64_t move = worker.post(command::MoveHandles{{Vec<3>(0.2, 0, 1)}});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  std::lock_guard lock(mutex);
+  REQUIRE(published.size() == 2);
+  const Snapshot& stepped = *published[0];
+  const Snapshot& measured = *published[1];
+  CHECK(stepped.processed == move);
+  CHECK(stepped.points_version != loaded->points_version);
+  // The step's snapshot carries the spacing measured before it, marked as such.
+  CHECK(stepped.spacing_version == loaded->spacing_version);
+  CHECK(stepped.spacing_h == loaded->spacing_h);
+  // Then the same points, measured.
+  CHECK(measured.generation > stepped.generation);
+  CHECK(measured.points_version == stepped.points_version);
+  CHECK(measured.spacing_version == measured.points_version);
+  CHECK(measured.points.positions == stepped.points.positions);
+  ThreadPool pool(1);
+  CHECK(measured.spacing_h == sampling_quality(measured.points, measured.settings.spacing, pool).spacing_h);
+  CHECK(worker.snapshot()->generation == measured.generation);
 }

@@ -108,6 +108,7 @@ void EditSession<D>::restore(const State& state) {
   if (!next.same_grid(settings_) || next.variant != settings_.variant) local_.reset();
   surface_->set_variant(next.variant);
   surface_->set_points(state.points);
+  surface_behind_ = false;
   settings_ = next;
   handles_ = state.handles;
   settled_ = state.settled;
@@ -167,12 +168,22 @@ void EditSession<D>::roll_back(PointSet<D> before) {
 }
 
 template <int D>
+DeformingSurface<D>& EditSession<D>::synced_surface() {
+  if (surface_behind_) {
+    surface_->set_points(local_->points());
+    surface_behind_ = false;
+  }
+  return *surface_;
+}
+
+template <int D>
 const AmlsSurface<D>& EditSession<D>::evaluable_surface() {
+  DeformingSurface<D>& surface = synced_surface();
   if (normals_version_ != version_) {
-    surface_->refresh_normals();
+    surface.refresh_normals();
     normals_version_ = version_;
   }
-  return surface_->surface();
+  return surface.surface();
 }
 
 template <int D>
@@ -212,7 +223,7 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
   EditResult result;
   if (to == handles_) return result;
   const MlsDeformation<D> deformation(handles_, to, settings_.kind, settings_.alpha);
-  if (surface_->points().empty()) {
+  if (points().empty()) {
     handles_ = std::move(to);
     result.changed = true;
     return result;
@@ -225,6 +236,7 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
   // any, is k + 1), so the surface shown is the one a replay ends with. The
   // points are settled first unless the policy saw them already (the loaded
   // shape: step 0 always resamples).
+  synced_surface();
   const bool resample = settings_.resample;
   const bool settle_first = resample && !settled_;
   const ResamplePolicy& policy = settings_.policy;
@@ -282,7 +294,6 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
   const bool start = !local_in_sync();
   EditResult result;
   Phases phases(control, start ? 2 : 1);
-  PointSet<D> before = surface_->points();
   // A stopped step leaves the local loop as it was, with its strain: the next step runs as if it never had.
   typename LocalDeformingSurface<D>::Saved local_before = start ? typename LocalDeformingSurface<D>::Saved{} : local_->save();
   const bool finished = phases.run(local_->pool(), [&] {
@@ -302,8 +313,8 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
     if (step.resample.flagged_cells > 0) ++result.resamples;
     return true;
   });
+  // surface_ is only read here: a stopped step leaves it as it was.
   if (!finished) {
-    if (phases.started()) roll_back(std::move(before));
     if (start)
       local_version_ = ~std::uint64_t{0};  // not begun: the next step starts from the surface's points
     else
@@ -314,7 +325,7 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
   }
   if (start) recording_.resampled(settings_);
   recording_.deformed(handles_, to, settings_);
-  surface_->set_points(local_->points());
+  surface_behind_ = true;
   handles_ = std::move(to);
   settled_ = true;
   ++version_;
@@ -327,12 +338,13 @@ template <int D>
 EditResult EditSession<D>::resample_now(const WorkControl& control) {
   EditResult result;
   result.changed = true;
-  if (surface_->points().empty()) return result;
+  DeformingSurface<D>& surface = synced_surface();
+  if (surface.points().empty()) return result;
   Phases phases(control, 1);
-  PointSet<D> before = surface_->points();
-  const bool finished = phases.run(surface_->pool(), [&] {
+  PointSet<D> before = surface.points();
+  const bool finished = phases.run(surface.pool(), [&] {
     if (!phases.next(kResamplingPhase)) return false;
-    add_stats(result, surface_->resample_only());
+    add_stats(result, surface.resample_only());
     result.resamples = 1;
     return true;
   });
@@ -352,7 +364,7 @@ EditResult EditSession<D>::set_variant(Variant variant, const WorkControl& contr
   if (variant == settings_.variant) return {};
   push_undo();
   settings_.variant = variant;
-  surface_->set_variant(variant);
+  synced_surface().set_variant(variant);
   local_.reset();
   return resample_now(control);
 }
@@ -374,7 +386,7 @@ EditResult EditSession<D>::set_grid(double spacing, double radius_factor, const 
   // Untouched points go in as loaded, the order `amls deform` hands them to its
   // surface in: the old surface keeps them sorted by its own cells, and another
   // order of the fits' sums changes the last bits of the resample.
-  surface->set_points(recording_.untouched() ? initial_.points : surface_->points());
+  surface->set_points(recording_.untouched() ? initial_.points : synced_surface().points());
   surface_ = std::move(surface);
   local_.reset();
   settings_ = next;

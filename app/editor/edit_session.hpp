@@ -11,8 +11,9 @@
 //
 // Under the `local` policy a LocalDeformingSurface carries the points and
 // their strain from step to step (core/run/local_deforming_surface.hpp): each
-// step maps them and resamples only where strained; the DeformingSurface then
-// holds a copy, for drawing, picking and evaluation.
+// step maps them and resamples only where strained. The DeformingSurface
+// takes a copy only when something needs it (evaluation, export, another
+// policy): copying and hashing a million points would cost more than the step.
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -60,7 +61,8 @@ class EditSession {
   // its settings are out of range.
   EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes = kDefaultUndoBytes);
 
-  const PointSet<D>& points() const { return surface_->points(); }
+  // In a fixed order for each version(): the local loop's while it holds them.
+  const PointSet<D>& points() const { return local_in_sync() ? local_->points() : surface_->points(); }
   const std::vector<Vec<D>>& handles() const { return handles_; }
   const SurfaceSettings& settings() const { return settings_; }
   const SessionRecording<D>& recording() const { return recording_; }
@@ -132,10 +134,13 @@ class EditSession {
                                   const WorkControl& control);
   // Whether the local loop holds the current points (its strain is theirs).
   bool local_in_sync() const { return local_ && local_version_ == version_; }
+  // surface_, holding the current points: copied from the local loop if a local step left it behind.
+  DeformingSurface<D>& synced_surface();
 
   int threads_;
   State initial_;
   std::unique_ptr<DeformingSurface<D>> surface_;
+  bool surface_behind_ = false;  // the local loop holds newer points than surface_ (it is in sync)
   std::unique_ptr<LocalDeformingSurface<D>> local_;  // made by the first step under `local`, for this grid and variant
   std::uint64_t local_version_ = ~std::uint64_t{0};  // the version whose points local_ holds
   std::vector<Vec<D>> handles_;

@@ -168,10 +168,6 @@ void EditorApp::take_snapshot() {
           renderer_->set_points(to_2d(next->points), spacing);
         else
           renderer_->set_points(next->points, spacing);
-        if (next->spacing_h.size() == next->points.size())
-          renderer_->set_scalars(next->spacing_h);
-        else
-          renderer_->clear_scalars();
       } catch (const std::exception& e) {
         ui_.tell({Message::Level::error, std::string("Cannot show the points: ") + e.what()});
       }
@@ -179,6 +175,12 @@ void EditorApp::take_snapshot() {
       view_.set_points(next->points, next->dimension == 3
                                          ? ui_.render.splat_scale * static_cast<float>(next->settings.spacing)
                                          : 0.0f);
+    }
+    if (new_points || next->spacing_version != shown_->spacing_version) {
+      if (next->spacing_h.size() == next->points.size())
+        renderer_->set_scalars(next->spacing_h);
+      else
+        renderer_->clear_scalars();
     }
     if (next->dimension == 2) {
       std::vector<glm::vec2> ends;

@@ -100,12 +100,41 @@ void EditorWorker::run() {
     publish(queued->sequence);
     {
       std::lock_guard lock(mutex_);
-      status_ = WorkerStatus{};
       processed_ = queued->sequence;
     }
-    idle_.notify_all();
     if (options_.on_publish) options_.on_publish();
+    // Still busy: wait_until_idle() returns with the spacing measured.
+    if (queue_.size() == 0) refresh_spacing();
+    {
+      std::lock_guard lock(mutex_);
+      status_ = WorkerStatus{};
+    }
+    idle_.notify_all();
   }
+}
+
+void EditorWorker::refresh_spacing() {
+  if (!derived_ || derived_->dimension == 0 || derived_->spacing_version == derived_->points_version) return;
+  set_phase("measuring the spacing", 0, 1);
+  on_session([&](auto& s) {
+    CancelScope stop_for_commands(s.pool(), [this] { return queue_.size() > 0 || queue_.closed(); });
+    try {
+      SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing, s.pool());
+      auto snapshot = std::make_shared<Snapshot>(*derived_);
+      snapshot->generation = ++generation_;
+      snapshot->spacing_h = std::move(quality.spacing_h);
+      snapshot->spacing = quality.stats;
+      snapshot->spacing_version = snapshot->points_version;
+      derived_ = snapshot;
+      {
+        std::lock_guard lock(mutex_);
+        snapshot_ = std::move(snapshot);
+      }
+      if (options_.on_publish) options_.on_publish();
+    } catch (const Cancelled&) {
+      // A command came: it goes first; the spacing is measured after it.
+    }
+  });
 }
 
 void EditorWorker::start(const InitialShape& shape) {
@@ -297,27 +326,16 @@ void EditorWorker::publish(std::uint64_t processed) {
                             snapshot->points = derived_->points;
                             snapshot->spacing_h = derived_->spacing_h;
                             snapshot->spacing = derived_->spacing;
+                            snapshot->spacing_version = derived_->spacing_version;
                             snapshot->curve = derived_->curve;
                           } else {
                             snapshot->points = points_3d(s.points());
-                            // While commands wait (a drag), the spacing of points
-                            // that only moved (no resample since) is measured at
-                            // most every quality_interval: on a million points it
-                            // costs as much as a local step.
-                            const bool recent = derived_ && derived_load_ == load_id_ && queue_.size() > 0 &&
-                                                resamples_ == quality_resamples_ &&
-                                                derived_->spacing_h.size() == s.points().size() &&
-                                                now - last_quality_ <
-                                                    std::chrono::duration<double>(options_.quality_interval);
-                            if (recent) {
+                            // The spacing is measured by refresh_spacing(); until then the last one stands in.
+                            if (derived_ && derived_load_ == load_id_ &&
+                                derived_->spacing_h.size() == s.points().size()) {
                               snapshot->spacing_h = derived_->spacing_h;
                               snapshot->spacing = derived_->spacing;
-                            } else {
-                              SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing, s.pool());
-                              snapshot->spacing_h = std::move(quality.spacing_h);
-                              snapshot->spacing = quality.stats;
-                              last_quality_ = now;
-                              quality_resamples_ = resamples_;
+                              snapshot->spacing_version = derived_->spacing_version;
                             }
                             if (derived_ && derived_load_ == load_id_) snapshot->curve = derived_->curve;
                           }

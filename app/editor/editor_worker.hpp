@@ -26,10 +26,6 @@ struct WorkerOptions {
   // While commands wait, the 2D curve is traced at most this often (seconds);
   // it always is once the queue is empty.
   double curve_interval = 0.1;
-  // While commands wait, each point's spacing (the colours and Table 1's
-  // spacing) is measured at most this often (seconds) unless the point count
-  // changed; it always is once the queue is empty.
-  double quality_interval = 0.25;
   // Called on the worker thread after each snapshot or message (e.g. to wake the UI's event loop).
   std::function<void()> on_publish;
   // For tests: called each time running work asks whether it should stop
@@ -77,6 +73,9 @@ class EditorWorker {
   void start(const InitialShape& shape);
   void note_result(const EditResult& result);
   void publish(std::uint64_t processed);
+  // Measures each point's spacing for the newest snapshot and publishes it
+  // again with it; stops, leaving it stale, as soon as a command is queued.
+  void refresh_spacing();
   void message(Message::Level level, std::string text);
   void set_phase(const char* name, int index, int count);
 
@@ -101,8 +100,6 @@ class EditorWorker {
   std::uint64_t derived_load_ = 0;
   std::uint64_t curve_version_ = ~std::uint64_t{0};
   Clock::time_point last_trace_{};
-  Clock::time_point last_quality_{};
-  std::size_t quality_resamples_ = 0;  // resamples_ when the spacing was last measured
   std::shared_ptr<const Snapshot> derived_;
 
   // Shared with the UI thread.

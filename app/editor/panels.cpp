@@ -250,8 +250,14 @@ void table1_section(const Snapshot& snapshot) {
   }
   ImGui::Text("%zu steps, %zu resamples, %.0f steps/s, %zu points", snapshot.steps, snapshot.resamples,
               snapshot.steps_per_second, snapshot.points.size());
-  ImGui::Text("spacing / h: min %.2f  median %.2f  max %.2f", snapshot.spacing.min, snapshot.spacing.median,
-              snapshot.spacing.max);
+  if (snapshot.spacing_version == Snapshot::kNotMeasured)
+    ImGui::TextColored(kDim, "spacing / h: measured once the drag pauses");
+  else
+    ImGui::TextColored(snapshot.spacing_version == snapshot.points_version ? ImGui::GetStyle().Colors[ImGuiCol_Text]
+                                                                           : kDim,
+                       "spacing / h: min %.2f  median %.2f  max %.2f%s", snapshot.spacing.min,
+                       snapshot.spacing.median, snapshot.spacing.max,
+                       snapshot.spacing_version == snapshot.points_version ? "" : " (before the last steps)");
   if (snapshot.has_last) {
     const std::size_t failed = snapshot.last.normals.failed();
     ImGui::TextColored(failed > 0 ? kWarning : kDim, "failed normal fits: %zu", failed);

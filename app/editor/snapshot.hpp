@@ -21,8 +21,15 @@ struct Snapshot {
   std::string name;
 
   PointSet<3> points;               // 2D: z = 0
-  std::vector<double> spacing_h;    // each point's nearest-neighbour distance / h
-  SpacingStats spacing;             // of spacing_h
+  // Each point's nearest-neighbour distance / h and their statistics, measured
+  // on the points of `spacing_version`: while a drag runs, the spacing is
+  // measured only when the worker waits for commands (it costs more than a
+  // local step on a million points), and a snapshot carries the last
+  // measurement while the point count stays (empty when it changed).
+  std::vector<double> spacing_h;
+  SpacingStats spacing;
+  static constexpr std::uint64_t kNotMeasured = ~std::uint64_t{0};
+  std::uint64_t spacing_version = kNotMeasured;
   std::vector<Vec<3>> handles;      // 2D: z = 0
   std::vector<CurveSegment> curve;  // 2D: the MLS curve F = 0, when traced
   SurfaceSettings settings;

@@ -40,7 +40,7 @@ template <int D>
 std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool) {
   if (points.size() < 2) return {};
   PointIndex<D> index;
-  index.build(points.positions, Vec<D>::Zero(), 2.0 * h);
+  index.build(points.positions, Vec<D>::Zero(), 2.0 * h, pool);
   std::vector<double> nearest(points.size());
   pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t i = begin; i < end; ++i)
