@@ -172,7 +172,7 @@ void EditorApp::take_snapshot() {
         ui_.tell({Message::Level::error, std::string("Cannot show the points: ") + e.what()});
       }
       // In 3D a click anywhere on a splat picks its point (splats are RenderOptions::splat_scale h wide).
-      view_.set_points(next->points, next->dimension == 3
+      view_.set_points(std::shared_ptr<const PointSet<3>>(next, &next->points), next->dimension == 3
                                          ? ui_.render.splat_scale * static_cast<float>(next->settings.spacing)
                                          : 0.0f);
     }

@@ -39,15 +39,10 @@ void ViewController::fit(const BoundingSphere& bounds, const Viewport& viewport)
   camera_.fit(BoundingSphere{bounds.center, 1.12f * bounds.radius}, viewport.aspect());
 }
 
-void ViewController::set_points(const PointSet<3>& points, float splat_radius) {
-  points_ = points;
+void ViewController::set_points(std::shared_ptr<const PointSet<3>> points, float splat_radius) {
+  points_ = std::move(points);
   splat_radius_ = splat_radius;
-  positions_.clear();
-  normals_.clear();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    positions_.push_back(to_glm(points.positions[i]));
-    normals_.push_back(to_glm(points.normals[i]));
-  }
+  pickable_ = false;
 }
 
 void ViewController::sync_handles(const std::vector<Vec<3>>& handles) {
@@ -64,6 +59,16 @@ std::vector<glm::vec3> ViewController::handle_positions() const {
 }
 
 std::optional<std::size_t> ViewController::pick_surface(glm::vec2 pixel, const Viewport& viewport) const {
+  if (!points_) return std::nullopt;
+  if (!pickable_) {
+    positions_.resize(points_->size());
+    normals_.resize(points_->size());
+    for (std::size_t i = 0; i < points_->size(); ++i) {
+      positions_[i] = to_glm(points_->positions[i]);
+      normals_[i] = to_glm(points_->normals[i]);
+    }
+    pickable_ = true;
+  }
   return pick_point(positions_, normals_, camera_, viewport, pixel, pick_radius_px_, splat_radius_);
 }
 
@@ -92,7 +97,7 @@ void ViewController::press(const InputEvent& event, glm::vec2 pixel, const Viewp
   if (drag_ || camera_drag_) return;  // one interaction at a time
   if (event.code == GLFW_MOUSE_BUTTON_LEFT && (event.mods & GLFW_MOD_SHIFT)) {
     if (const std::optional<std::size_t> hit = pick_surface(pixel, viewport)) {
-      const Vec<3> position = points_.positions[*hit];
+      const Vec<3> position = points_->positions[*hit];
       handles_.push_back(position);
       selected_ = handles_.size() - 1;
       post_(command::AddHandle{position});
