@@ -36,6 +36,14 @@ EditSession<2> circle_with_two_handles(int threads = 1) {
   return session;
 }
 
+// Positions in lexicographic order: the point set without its order.
+std::vector<Vec<2>> sorted(std::vector<Vec<2>> v) {
+  std::sort(v.begin(), v.end(), [](const Vec<2>& a, const Vec<2>& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  return v;
+}
+
 // Drags the right handle to x in `moves` steps.
 void drag_right_handle(EditSession<2>& session, double x, int moves) {
   session.begin_drag();
@@ -369,12 +377,6 @@ TEST_CASE("under local a session resamples where strained, keeps the strain thro
   REQUIRE(recording.exact());
   CHECK(recording.replay_arguments() == "--resample local");
   // The points as a set are the replay's (the session need not keep them in the replay's order).
-  auto sorted = [](std::vector<Vec<2>> v) {
-    std::sort(v.begin(), v.end(), [](const Vec<2>& a, const Vec<2>& b) {
-      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    });
-    return v;
-  };
   const PointSet<2> replayed = amls::test::replay_with_amls_deform(recording);
   CHECK(sorted(replayed.positions) == sorted(session.points().positions));
   // The surface to evaluate takes the local loop's points only when asked for, and then holds them all.
@@ -492,4 +494,28 @@ TEST_CASE("a point set sparse in places opens with widened supports: the session
   const double reach = 1.5 * shape.settings.spacing;
   CHECK(amls::test::probes_in_holes(widened.points().positions, probes, reach) == 0);
   CHECK(amls::test::probes_in_holes(uniform.points().positions, probes, reach) > probes.size() / 2);
+}
+
+TEST_CASE("under local the end of a drag maps the points exactly, as the replay ends; a stop changes nothing") {
+  EditSession<2> session = circle_with_two_handles();
+  session.set_resampling(true, ResamplePolicy::parse("local"));
+  session.begin_drag();
+  std::vector<Vec<2>> to = session.handles();
+  for (int k = 1; k <= 3; ++k) {
+    to[1].x() = 1.0 + 0.002 * k;  // mild: no step resamples, the points stay interpolated
+    REQUIRE(session.move_handles(to, kRunAll).stepped);
+  }
+  const PointSet<2> interpolated = session.points();
+  const std::uint64_t version = session.version();
+  const WorkControl stop{[] { return true; }, {}};
+  CHECK_FALSE(session.map_exactly(stop));
+  CHECK(session.version() == version);
+  CHECK(session.points().positions == interpolated.positions);
+  REQUIRE(session.map_exactly(kRunAll));
+  CHECK(session.version() != version);
+  CHECK(session.points().positions != interpolated.positions);
+  CHECK_FALSE(session.map_exactly(kRunAll));  // exact already
+  const PointSet<2> replayed = amls::test::replay_with_amls_deform(session.recording());
+  CHECK(sorted(replayed.positions) == sorted(session.points().positions));
+  CHECK(sorted(session.evaluable_surface().points().positions) == sorted(session.points().positions));
 }

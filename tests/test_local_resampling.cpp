@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "core/geometry/shapes.hpp"
@@ -175,6 +176,39 @@ TEST_CASE("local drag: the points follow the whole drag's map from their rest po
   const LocalStepStats stats = surface.step(MlsDeformation<3>(moved, target));
   REQUIRE(stats.resample.flagged_cells == 0);
   CHECK(surface.rest_handles() == moved);
+}
+
+TEST_CASE("local drag: its end maps the points exactly, and the drag's next step runs as if it had not") {
+  const double h = 0.3 * std::sqrt(0.83 * 4.0 * 3.14159265 / 8000.0);
+  auto make = [&] {
+    auto surface = std::make_unique<LocalDeformingSurface<3>>(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{},
+                                                              Variant::exact, 2);
+    surface->set_points(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 8000));
+    surface->resample_all();
+    return surface;
+  };
+  const auto paused = make(), straight = make();
+  const PointSet<3> start = paused->points();
+  CHECK_FALSE(paused->map_exactly());  // at rest: nothing interpolated
+  const double pull = 0.1 * h;
+  for (std::size_t k = 0; k < 3; ++k)
+    for (LocalDeformingSurface<3>* s : {paused.get(), straight.get()})
+      REQUIRE(s->step(drag_step(pull, k)).resample.flagged_cells == 0);
+  REQUIRE(paused->points().positions == straight->points().positions);
+  REQUIRE(paused->map_exactly());
+  CHECK_FALSE(paused->map_exactly());  // exact already
+  PointSet<3> exact = start;
+  MlsDeformation<3> whole(drag_step(pull, 0).from(), drag_step(pull, 2).to());
+  whole.use_polar_iteration(true);
+  whole.apply(exact, paused->pool());
+  CHECK(paused->points().positions == exact.positions);
+  CHECK(paused->points().normals == exact.normals);
+  CHECK(paused->points().positions != straight->points().positions);  // the lattice's were interpolated
+  CHECK(paused->rest_handles() == straight->rest_handles());
+  for (LocalDeformingSurface<3>* s : {paused.get(), straight.get()})
+    REQUIRE(s->step(drag_step(pull, 3)).resample.flagged_cells == 0);
+  CHECK(paused->points().positions == straight->points().positions);
+  CHECK(paused->strain() == straight->strain());
 }
 
 TEST_CASE("local drag: a step that resamples maps every point exactly and starts a new rest state") {

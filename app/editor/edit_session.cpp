@@ -216,6 +216,23 @@ bool EditSession<D>::cancel_drag() {
 }
 
 template <int D>
+bool EditSession<D>::map_exactly(const WorkControl& control) {
+  if (!local_in_sync()) return false;
+  Phases phases(control, 1);
+  bool changed = false;
+  const bool finished = phases.run(local_->pool(), [&] {
+    if (!phases.next("mapping the points exactly")) return false;
+    changed = local_->map_exactly();
+    return true;
+  });
+  if (!finished || !changed) return false;
+  ++version_;
+  local_version_ = version_;
+  surface_behind_ = true;
+  return true;
+}
+
+template <int D>
 EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkControl& control) {
   if (to.size() != handles_.size())
     throw std::invalid_argument("moving " + std::to_string(to.size()) + " handles, but the session has " +

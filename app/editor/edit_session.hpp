@@ -87,6 +87,12 @@ class EditSession {
   void begin_drag();
   EditResult move_handles(std::vector<Vec<D>> to, const WorkControl& control);
   bool cancel_drag();
+  // Under `local`, the end of a drag (the worker calls it once it waits for
+  // commands): the points the last step left interpolated on the lattice are
+  // mapped exactly (LocalDeformingSurface::map_exactly; `amls deform --resample
+  // local` ends alike) and the point set is a new version. False if there was
+  // nothing to do or the control stopped it (then nothing changed).
+  bool map_exactly(const WorkControl& control);
 
   // Parameters. The variant and the grid resample the current surface at once
   // (no deformation) and are undoable; kind, alpha and resampling (on or off,

@@ -103,14 +103,35 @@ void EditorWorker::run() {
       processed_ = queued->sequence;
     }
     if (options_.on_publish) options_.on_publish();
-    // Still busy: wait_until_idle() returns with the spacing measured.
-    if (queue_.size() == 0) refresh_spacing();
+    // Still busy: wait_until_idle() returns with this done.
+    if (queue_.size() == 0) work_while_waiting();
     {
       std::lock_guard lock(mutex_);
       status_ = WorkerStatus{};
     }
     idle_.notify_all();
   }
+}
+
+WorkControl EditorWorker::control_while_waiting() {
+  return WorkControl{[this] { return queue_.size() > 0 || queue_.closed(); },
+                     [this](const char* name, int index, int count) { set_phase(name, index, count); }};
+}
+
+void EditorWorker::work_while_waiting() {
+  if (std::holds_alternative<std::monostate>(session_)) return;
+  bool mapped = false;
+  on_session([&](auto& s) { mapped = s.map_exactly(control_while_waiting()); });
+  if (mapped) {
+    std::uint64_t processed = 0;
+    {
+      std::lock_guard lock(mutex_);
+      processed = processed_;
+    }
+    publish(processed);
+    if (options_.on_publish) options_.on_publish();
+  }
+  if (queue_.size() == 0) refresh_spacing();
 }
 
 void EditorWorker::refresh_spacing() {
@@ -208,6 +229,7 @@ void EditorWorker::load_file(const std::string& path) {
 void EditorWorker::export_points(const std::string& path) {
   on_session([&](auto& s) {
     try {
+      s.map_exactly(WorkControl{});  // a local drag's end, if the worker has not waited since
       write_point_set(path, s.points(), format_from_extension(path));
       message(Message::Level::info, "Exported " + describe_count(s.points().size(), "points") + " to " + path);
     } catch (const std::exception& e) {
@@ -219,6 +241,7 @@ void EditorWorker::export_points(const std::string& path) {
 void EditorWorker::export_mesh(const std::string& path) {
   on_session([&](auto& s) {
     try {
+      s.map_exactly(WorkControl{});
       const MeshExport mesh = export_surface_mesh(path, s.evaluable_surface(), s.settings().variant, s.pool());
       message(mesh.topology.closed() ? Message::Level::info : Message::Level::warning,
               "Exported a mesh of " + mesh.summary() + " to " + path);

@@ -73,6 +73,11 @@ class EditorWorker {
   void start(const InitialShape& shape);
   void note_result(const EditResult& result);
   void publish(std::uint64_t processed);
+  // Once the queue is empty: ends a local drag (the points mapped exactly),
+  // then measures the spacing; each stops as soon as a command is queued.
+  void work_while_waiting();
+  // The control of work done while waiting: it stops once a command is queued.
+  WorkControl control_while_waiting();
   // Measures each point's spacing for the newest snapshot and publishes it
   // again with it; stops, leaving it stale, as soon as a command is queued.
   void refresh_spacing();

@@ -56,7 +56,7 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
   c.timings = r.timings.phases();
   c.peak_memory_mib = peak_memory_mib();
   c.threads = threads;
-  char text[480];
+  char text[640];
   std::snprintf(text, sizeof text,
                 "%zu steps: %.1f ms median (%.1f ms CPU, all threads), %.1f ms max per step, %.0f points resampled per "
                 "step; after: spacing "
@@ -66,6 +66,12 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
                 r.spacing_h.min, r.spacing_h.median, r.spacing_h.max, r.exact_to_surface_mean_h,
                 r.exact_to_surface_max_h, r.holes, r.probes, r.rest_map_drift_h);
   c.result = text;
+  if (mode == DragResample::local) {
+    std::snprintf(text, sizeof text,
+                  "; the drag's end maps the points exactly in %.0f ms (before it, exact shape to surface %.2g/%.2g h)",
+                  1e3 * r.finish_seconds, r.interpolated_to_surface_mean_h, r.interpolated_to_surface_max_h);
+    c.result += text;
+  }
   c.figures = {{"step_ms_median", r.median_ms()},
                {"step_cpu_ms_median", r.cpu_median_ms()},
                {"step_ms_max", r.max_ms()},
@@ -77,6 +83,11 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
                {"exact_to_surface_max_h", r.exact_to_surface_max_h},
                {"holes", static_cast<double>(r.holes)},
                {"rest_map_drift_h", r.rest_map_drift_h}};
+  if (mode == DragResample::local) {
+    c.figures.emplace_back("finish_ms", 1e3 * r.finish_seconds);
+    c.figures.emplace_back("interpolated_to_surface_mean_h", r.interpolated_to_surface_mean_h);
+    c.figures.emplace_back("interpolated_to_surface_max_h", r.interpolated_to_surface_max_h);
+  }
   return c;
 }
 

@@ -166,6 +166,12 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
       report.rest_map_drift_h =
           std::max(report.rest_map_drift_h, (rest_tracers.positions[i] - tracers.positions[i]).norm() / h);
     measure(surface.points(), rest_tracers, surface.pool());
+    report.interpolated_to_surface_mean_h = report.exact_to_surface_mean_h;
+    report.interpolated_to_surface_max_h = report.exact_to_surface_max_h;
+    Stopwatch clock;
+    surface.map_exactly();
+    report.finish_seconds = clock.lap();
+    measure(surface.points(), rest_tracers, surface.pool());
   }
   return report;
 }

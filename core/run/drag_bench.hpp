@@ -13,7 +13,8 @@
 // surface: |F| at each tracer (in h, about its distance to the surface) and
 // where F is undefined there (holes). The local policy maps its points from
 // rest states rather than step by step, and its tracers follow the same maps
-// exactly.
+// exactly. Both end as a drag does: `always` resamples once more, `local`
+// maps its points exactly.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -64,6 +65,14 @@ struct DragBenchReport {
   // points are (core/run/local_deforming_surface.hpp), not step by step as
   // always's: the largest distance between the two shapes, in h.
   double rest_map_drift_h = 0.0;
+  // Local only: the drag's end. The last step leaves the points interpolated
+  // on the lattice; the end of the drag maps them exactly
+  // (LocalDeformingSurface::map_exactly, as the editor does once it waits),
+  // and the quality above is measured after it. Its time, and the exact
+  // shape to the surface before it (mean, max, in h).
+  double finish_seconds = 0.0;
+  double interpolated_to_surface_mean_h = 0.0;
+  double interpolated_to_surface_max_h = 0.0;
 };
 
 // The drag's handles after `step` steps, for a sphere about `center` of `radius`.

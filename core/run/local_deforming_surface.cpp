@@ -95,12 +95,19 @@ MlsDeformation<D> LocalDeformingSurface<D>::map_from_rest(const std::vector<Vec<
 
 template <int D>
 void LocalDeformingSurface<D>::leave_rest_state() {
-  if (rest_ && !exact_) {
-    points_ = rest_->points;
-    map_from_rest(current_).apply(points_, pool_);
-  }
+  map_exactly();
   rest_.reset();
   exact_ = true;
+}
+
+template <int D>
+bool LocalDeformingSurface<D>::map_exactly() {
+  if (!rest_ || exact_) return false;
+  PointSet<D> exact = rest_->points;
+  map_from_rest(current_).apply(exact, pool_);
+  points_ = std::move(exact);
+  exact_ = true;
+  return true;
 }
 
 template <int D>

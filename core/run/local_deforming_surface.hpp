@@ -63,6 +63,12 @@ class LocalDeformingSurface {
   // lattice, the points deformed, then resampled where strained.
   LocalStepStats step(const Deformation<D>& deformation, double t0, double t1);
 
+  // The end of a drag: if the last step interpolated the points, maps them
+  // exactly from the rest state (all of them, a few hundred milliseconds at a
+  // million points) and returns true. The rest state stays, and the next step
+  // of the drag maps from it as if this had not run. Stopped by the pool's
+  // cancellation check, it leaves the points as they were.
+  bool map_exactly();
   // The surface of the current points, hashed and with their pseudo-normals,
   // to evaluate or measure F (made anew: the loop itself keeps no index).
   AmlsSurface<D> fitted_surface();
