@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/editor/edit_session.hpp"
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
 #include "core/io/point_set_io.hpp"
@@ -57,6 +58,14 @@ TEST_CASE("built-in shapes: the paper's circle and a sphere, with their scene so
   CHECK(sphere.points.positions[7].norm() == doctest::Approx(2.0));
   CHECK_THROWS_AS(make_circle(1.0, 2, 0.1), std::invalid_argument);
   CHECK_THROWS_AS(make_circle(-1.0, 20, 0.1), std::invalid_argument);
+}
+
+TEST_CASE("a shape of 100,000 points or more resamples under local in the editor, a smaller one as the paper") {
+  CHECK(default_shape(3).settings.policy.kind == ResamplePolicy::Kind::always);
+  CHECK(make_sphere(1.0, kLocalResamplingFrom - 1, 0.01).settings.policy.kind == ResamplePolicy::Kind::always);
+  const InitialShape large = make_sphere(1.0, kLocalResamplingFrom, 0.01);
+  CHECK(large.settings.policy.kind == ResamplePolicy::Kind::local);
+  CHECK(EditSession<3>(large, 1).settings().policy.kind == ResamplePolicy::Kind::local);
 }
 
 TEST_CASE("a point-set file opens with h from its spacing, and the coverage of one resampling at h") {

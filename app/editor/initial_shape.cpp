@@ -26,6 +26,11 @@ void check_builtin(double radius, std::size_t points, double spacing, std::size_
   require(spacing > 0.0 && std::isfinite(spacing), "grid spacing h must be a positive number");
 }
 
+InitialShape with_editor_policy(InitialShape shape) {
+  if (shape.points.size() >= kLocalResamplingFrom) shape.settings.policy = ResamplePolicy::parse("local");
+  return shape;
+}
+
 // A built-in shape as a scene without a history: the default shape of a
 // Scene<D> (a circle in 2D, a sphere in 3D), sampled as `amls deform` would.
 template <int D>
@@ -35,7 +40,7 @@ InitialShape builtin(double radius, std::size_t points, double spacing) {
   scene.shape.radius = radius;
   scene.shape.points = points;
   scene.grid_spacing = spacing;
-  return start_from_scene(scene, 1);
+  return with_editor_policy(start_from_scene(scene, 1));
 }
 
 // A point-set file opened on its own, as a scene would name it.
@@ -125,8 +130,8 @@ InitialShape load_point_set_file(const std::string& path) {
 }
 
 InitialShape load_initial_shape(const std::string& path, int threads) {
-  if (lower_extension(path) == ".json") return load_scene_start(path, threads);
-  return load_point_set_file(path);
+  return with_editor_policy(lower_extension(path) == ".json" ? load_scene_start(path, threads)
+                                                            : load_point_set_file(path));
 }
 
 }  // namespace amls::editor

@@ -30,4 +30,11 @@ InitialShape load_point_set_file(const std::string& path);
 // scene's shape file (normal estimation, mesh sampling).
 InitialShape load_initial_shape(const std::string& path, int threads);
 
+// From this many points on, a shape the editor opens (built-in, file or
+// scene) resamples under `local` rather than the paper's `always`: a whole
+// resample takes over half a second a step there (0.6 s at 200k points, 3.5 s
+// at 1M on two threads), a local step tens of milliseconds
+// (docs/local-resampling.md). The Surface panel switches back.
+inline constexpr std::size_t kLocalResamplingFrom = 100000;
+
 }  // namespace amls::editor
