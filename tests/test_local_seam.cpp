@@ -1,0 +1,133 @@
+// The seam of local resampling: the gap it leaves against a whole resample,
+// the new points inside R against a whole resample's, and widened supports.
+#include <doctest/doctest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/geometry/kd_tree.hpp"
+#include "core/geometry/sample_spacing.hpp"
+#include "core/geometry/shapes.hpp"
+#include "core/resample/local_resampling.hpp"
+#include "surface_fixtures.hpp"
+
+using namespace amls;
+
+namespace {
+
+// The points of a whole resample of `points` (the paper's Resample over every point).
+template <int D>
+PointSet<D> whole_resample(const PointSet<D>& points, const Grid<D>& grid, const AmlsParameters& parameters,
+                           ThreadPool& pool) {
+  AmlsSurface<D> surface = test::ready_surface<D>(points, grid, pool, parameters);
+  Resampler<D> resampler;
+  resampler.update_function(surface, pool);
+  return resampler.resample(surface, Variant::exact, pool);
+}
+
+// Resamples `points` where `flagged` says, with the local resampler; every other point's strain is just under the limit.
+template <int D, typename Flagged>
+PointSet<D> local_resample(PointSet<D> points, const Grid<D>& grid, const AmlsParameters& parameters, bool fill,
+                           Flagged&& flagged, ThreadPool& pool) {
+  LocalResampler<D> resampler(grid, parameters, Variant::exact);
+  LocalResampleOptions options;
+  options.fill_seam = fill;
+  resampler.set_options(options);
+  std::vector<float> strain(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    strain[i] = flagged(points.positions[i]) ? 1.0F : static_cast<float>(0.9 * options.strain_limit);
+  resampler.resample(points, strain, pool);
+  return points;
+}
+
+// A resample of `shape`, turned off the grid's edges and stretched about its
+// centre by `stretch`: the sampling the kept points have near the limit.
+template <int D>
+PointSet<D> stretched_resample(const PointSet<D>& shape, const Vec<D>& center, double stretch, const Grid<D>& grid,
+                               ThreadPool& pool) {
+  PointSet<D> points = whole_resample<D>(shape, grid, AmlsParameters{}, pool);
+  Mat<D> r;
+  if constexpr (D == 2) {
+    r = Eigen::Rotation2D<double>(0.3).toRotationMatrix();
+  } else {
+    r = Eigen::AngleAxisd(0.3, Vec<3>(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points.positions[i] = center + stretch * (r * (points.positions[i] - center));
+    points.normals[i] = r * points.normals[i];
+  }
+  return points;
+}
+
+// The largest distance from a probe to its nearest point, over the probes
+// for which `counts` holds; in h.
+template <int D, typename Counts>
+double widest_gap(const std::vector<Vec<D>>& probes, const std::vector<Vec<D>>& points, double h, Counts&& counts) {
+  KdTree<D> tree;
+  tree.build(points);
+  std::vector<std::uint32_t> ids;
+  std::vector<double> squared;
+  double widest = 0.0;
+  for (const Vec<D>& p : probes) {
+    if (!counts(p)) continue;
+    tree.nearest(p, 1, ids, squared);
+    widest = std::max(widest, std::sqrt(squared.front()) / h);
+  }
+  return widest;
+}
+
+template <int D>
+struct SeamGaps {
+  double whole = 0.0;      // anywhere, after a whole resample
+  double filled = 0.0;     // near the seam, after a local resample of half
+  double unfilled = 0.0;   // the same without the strip's new points
+};
+
+// A shape stretched just under the strain limit, its half x < centre
+// resampled locally: the widest gap within 3 h of the seam (the plane x =
+// centre, R's edge lying within a region cell and Delta of it).
+template <int D>
+SeamGaps<D> seam_gaps(const PointSet<D>& shape, const std::vector<Vec<D>>& probes, const Vec<D>& center,
+                      double stretch, const Grid<D>& grid) {
+  ThreadPool pool(2);
+  const double h = grid.spacing();
+  const PointSet<D> points = stretched_resample<D>(shape, center, stretch, grid, pool);
+  auto flagged = [&](const Vec<D>& p) { return p.x() < center.x(); };
+  const double band = 4.0 * h + 3.0 * h + 3.0 * h;  // a region cell, Delta, and the gap's own width
+  auto near_seam = [&](const Vec<D>& p) { return std::abs(p.x() - center.x()) < band; };
+  SeamGaps<D> gaps;
+  gaps.whole = widest_gap<D>(probes, whole_resample<D>(points, grid, AmlsParameters{}, pool).positions, h,
+                             [](const Vec<D>&) { return true; });
+  gaps.filled = widest_gap<D>(probes, local_resample<D>(points, grid, AmlsParameters{}, true, flagged, pool).positions,
+                              h, near_seam);
+  gaps.unfilled = widest_gap<D>(
+      probes, local_resample<D>(points, grid, AmlsParameters{}, false, flagged, pool).positions, h, near_seam);
+  MESSAGE("widest gap: whole resample " << gaps.whole << " h; at the seam " << gaps.filled << " h, without the strip "
+                                        << gaps.unfilled << " h");
+  return gaps;
+}
+
+}  // namespace
+
+TEST_CASE("local seam, 2D: next to points stretched near the strain limit, no gap wider than a whole resample's") {
+  const Vec<2> center(0.5, 0.5);
+  const Grid<2> grid = Grid<2>::unit(128);
+  const double stretch = 1.1;
+  const SeamGaps<2> gaps = seam_gaps<2>(sample_circle(center, 0.3, 400),
+                                        sample_circle(center, 0.3 * stretch, 20000).positions, center, stretch, grid);
+  CHECK(gaps.filled <= 1.1 * gaps.whole);
+  CHECK(gaps.unfilled > gaps.filled);
+}
+
+TEST_CASE("local seam, 3D: next to points stretched near the strain limit, no gap wider than a whole resample's") {
+  const Vec<3> center(0.5, 0.5, 0.5);
+  const Grid<3> grid = Grid<3>::unit(64);
+  const double stretch = 1.1;
+  const SeamGaps<3> gaps = seam_gaps<3>(sample_sphere(center, 0.2, 4000),
+                                        sample_sphere(center, 0.2 * stretch, 100000).positions, center, stretch, grid);
+  CHECK(gaps.filled <= 1.1 * gaps.whole);
+  CHECK(gaps.unfilled > gaps.filled);
+}
