@@ -131,3 +131,59 @@ TEST_CASE("local seam, 3D: next to points stretched near the strain limit, no ga
   CHECK(gaps.filled <= 1.1 * gaps.whole);
   CHECK(gaps.unfilled > gaps.filled);
 }
+
+namespace {
+
+// The points of `points` below z = `below`, sorted: to compare two sets.
+std::vector<Vec<3>> below(const PointSet<3>& points, double below) {
+  std::vector<Vec<3>> out;
+  for (const Vec<3>& p : points.positions)
+    if (p.z() < below) out.push_back(p);
+  std::sort(out.begin(), out.end(), [](const Vec<3>& a, const Vec<3>& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  return out;
+}
+
+// Resamples the points below z = `flag_below` locally and the whole surface:
+// well inside R (two region cells and the widest support below its edge) the
+// new points are the same.
+void check_inside_region(const PointSet<3>& points, const Grid<3>& grid, const AmlsParameters& parameters,
+                         double flag_below) {
+  ThreadPool pool(2);
+  const PointSet<3> whole = whole_resample<3>(points, grid, parameters, pool);
+  const PointSet<3> local = local_resample<3>(points, grid, parameters, true,
+                                              [&](const Vec<3>& p) { return p.z() < flag_below; }, pool);
+  const double inside = flag_below - 8.0 * grid.spacing() - 4.0 * parameters.radius_factor * grid.spacing();
+  const std::vector<Vec<3>> a = below(whole, inside);
+  const std::vector<Vec<3>> b = below(local, inside);
+  MESSAGE(a.size() << " new points well inside R");
+  REQUIRE(a.size() > 100);
+  CHECK(a == b);
+}
+
+}  // namespace
+
+TEST_CASE("local seam: inside R the new points are those of a whole resample of the same points") {
+  const Vec<3> center(0.5, 0.5, 0.5);
+  check_inside_region(sample_sphere(center, 0.3, 5000), Grid<3>::unit(64), AmlsParameters{}, center.z() + 0.1);
+}
+
+TEST_CASE("local seam: with widened supports, a sparse half is covered and inside R the points are a whole resample's") {
+  const PointSet<3> input = test::half_sparse_sphere(3000);
+  const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
+  const Grid<3> grid(Vec<3>::Constant(-1.5), h);
+  AmlsParameters parameters;
+  parameters.widen_support = true;
+  std::vector<Vec<3>> probes;
+  for (const Vec<3>& p : sample_sphere(Vec<3>::Zero(), 1.0, 2000).positions)
+    if (p.z() < -0.1) probes.push_back(p);
+  ThreadPool pool(2);
+  // Everything flagged (a start), then the sparse half and a band of the dense one.
+  for (const double flag_below : {2.0, 0.2}) {
+    const PointSet<3> out =
+        local_resample<3>(input, grid, parameters, true, [&](const Vec<3>& p) { return p.z() < flag_below; }, pool);
+    CHECK(test::probes_in_holes(out.positions, probes, 1.5 * h) == 0);
+  }
+  check_inside_region(input, grid, parameters, 0.2);
+}
