@@ -79,57 +79,49 @@ double widest_gap(const std::vector<Vec<D>>& probes, const std::vector<Vec<D>>& 
   return widest;
 }
 
-template <int D>
-struct SeamGaps {
-  double whole = 0.0;      // anywhere, after a whole resample
-  double filled = 0.0;     // near the seam, after a local resample of half
-  double unfilled = 0.0;   // the same without the strip's new points
-};
-
-// A shape stretched just under the strain limit, its half x < centre
-// resampled locally: the widest gap within 3 h of the seam (the plane x =
-// centre, R's edge lying within a region cell and Delta of it).
-template <int D>
-SeamGaps<D> seam_gaps(const PointSet<D>& shape, const std::vector<Vec<D>>& probes, const Vec<D>& center,
-                      double stretch, const Grid<D>& grid) {
+// A shape (`sample(radius, points)`: a circle or sphere about `center`)
+// resampled, stretched by 10 % (just under the strain limit), and its half
+// x < centre resampled locally: near the seam (R's edge lies within a region
+// cell and Delta of the plane x = centre) the widest gap from the exact shape
+// to the points is at most 10 % above a whole resample's, and the strip's
+// new points are what keeps it there.
+template <int D, typename Sample>
+void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, std::size_t probes,
+                     const Grid<D>& grid, Sample&& sample) {
   ThreadPool pool(2);
   const double h = grid.spacing();
-  const PointSet<D> points = stretched_resample<D>(shape, center, stretch, grid, pool);
+  const double stretch = 1.1;
+  const PointSet<D> stretched = stretched_resample<D>(sample(radius, points), center, stretch, grid, pool);
+  const std::vector<Vec<D>> exact = sample(stretch * radius, probes).positions;
   auto flagged = [&](const Vec<D>& p) { return p.x() < center.x(); };
-  const double band = 4.0 * h + 3.0 * h + 3.0 * h;  // a region cell, Delta, and the gap's own width
+  const double band = 4.0 * h + 3.0 * h + 3.0 * h;  // a region cell, Delta, and a gap's own width
   auto near_seam = [&](const Vec<D>& p) { return std::abs(p.x() - center.x()) < band; };
-  SeamGaps<D> gaps;
-  gaps.whole = widest_gap<D>(probes, whole_resample<D>(points, grid, AmlsParameters{}, pool).positions, h,
-                             [](const Vec<D>&) { return true; });
-  gaps.filled = widest_gap<D>(probes, local_resample<D>(points, grid, AmlsParameters{}, true, flagged, pool).positions,
-                              h, near_seam);
-  gaps.unfilled = widest_gap<D>(
-      probes, local_resample<D>(points, grid, AmlsParameters{}, false, flagged, pool).positions, h, near_seam);
-  MESSAGE("widest gap: whole resample " << gaps.whole << " h; at the seam " << gaps.filled << " h, without the strip "
-                                        << gaps.unfilled << " h");
-  return gaps;
+  const double whole = widest_gap<D>(exact, whole_resample<D>(stretched, grid, AmlsParameters{}, pool).positions,
+                                     h, [](const Vec<D>&) { return true; });
+  auto at_seam = [&](bool fill) {
+    return widest_gap<D>(exact, local_resample<D>(stretched, grid, AmlsParameters{}, fill, flagged, pool).positions,
+                         h, near_seam);
+  };
+  const double filled = at_seam(true);
+  const double unfilled = at_seam(false);
+  MESSAGE("widest gap: whole resample " << whole << " h; at the seam " << filled << " h, without the strip "
+                                        << unfilled << " h");
+  CHECK(filled <= 1.1 * whole);
+  CHECK(unfilled > filled);
 }
 
 }  // namespace
 
 TEST_CASE("local seam, 2D: next to points stretched near the strain limit, no gap wider than a whole resample's") {
   const Vec<2> center(0.5, 0.5);
-  const Grid<2> grid = Grid<2>::unit(128);
-  const double stretch = 1.1;
-  const SeamGaps<2> gaps = seam_gaps<2>(sample_circle(center, 0.3, 400),
-                                        sample_circle(center, 0.3 * stretch, 20000).positions, center, stretch, grid);
-  CHECK(gaps.filled <= 1.1 * gaps.whole);
-  CHECK(gaps.unfilled > gaps.filled);
+  check_seam_gaps<2>(center, 0.3, 400, 20000, Grid<2>::unit(128),
+                     [&](double radius, std::size_t n) { return sample_circle(center, radius, n); });
 }
 
 TEST_CASE("local seam, 3D: next to points stretched near the strain limit, no gap wider than a whole resample's") {
   const Vec<3> center(0.5, 0.5, 0.5);
-  const Grid<3> grid = Grid<3>::unit(64);
-  const double stretch = 1.1;
-  const SeamGaps<3> gaps = seam_gaps<3>(sample_sphere(center, 0.2, 4000),
-                                        sample_sphere(center, 0.2 * stretch, 100000).positions, center, stretch, grid);
-  CHECK(gaps.filled <= 1.1 * gaps.whole);
-  CHECK(gaps.unfilled > gaps.filled);
+  check_seam_gaps<3>(center, 0.2, 4000, 100000, Grid<3>::unit(64),
+                     [&](double radius, std::size_t n) { return sample_sphere(center, radius, n); });
 }
 
 namespace {
