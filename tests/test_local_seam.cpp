@@ -158,7 +158,13 @@ void check_inside_region(const PointSet<3>& points, const Grid<3>& grid, const A
 
 TEST_CASE("local seam: inside R the new points are those of a whole resample of the same points") {
   const Vec<3> center(0.5, 0.5, 0.5);
-  check_inside_region(sample_sphere(center, 0.3, 5000), Grid<3>::unit(64), AmlsParameters{}, center.z() + 0.1);
+  AmlsParameters parameters;
+  // Widening on where nothing is sparse: every Delta_i is Delta, also for the
+  // points at the support's rim (measured with their neighbours beyond it).
+  for (const bool widen : {false, true}) {
+    parameters.widen_support = widen;
+    check_inside_region(sample_sphere(center, 0.3, 5000), Grid<3>::unit(64), parameters, center.z() + 0.1);
+  }
 }
 
 TEST_CASE("local seam: with widened supports, a sparse half is covered and inside R the points are a whole resample's") {
