@@ -94,7 +94,9 @@ void check_seam(const SeamCase<D>& c) {
   const auto [seam_lo, seam_hi] = std::minmax_element(c.seam.begin(), c.seam.end());
   MESSAGE("spacing inside [" << *in_lo << ", " << *in_hi << "] h, across the seam [" << *seam_lo << ", " << *seam_hi
                              << "] h; " << c.stats.dropped_at_seam << " crossings dropped at the seam");
-  CHECK(*seam_lo >= *in_lo);
+  // A new point may come as close to a kept one as the resampler puts two of
+  // its own at neighbouring vertices (h / sqrt(2)), and no closer.
+  CHECK(*seam_lo >= std::min(*in_lo, std::sqrt(0.5)));
   CHECK(*seam_hi <= *in_hi);
 }
 
@@ -224,7 +226,7 @@ TEST_CASE("local drag: a step that resamples maps every point exactly and starts
   // The kept points come first, in their order: each is the exact map of a start point, to 1e-9 relative.
   PointSet<3> exact = start;
   drag_step(pull, 0).apply(exact, surface.pool());
-  const std::size_t kept = surface.points().size() - stats.resample.inserted;
+  const std::size_t kept = surface.points().size() - stats.resample.inserted - stats.resample.filled_at_seam;
   std::size_t matched = 0;
   for (std::size_t i = 0, j = 0; i < kept && j < exact.size(); ++j) {
     const Vec<3>& p = surface.points().positions[i];

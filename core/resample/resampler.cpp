@@ -60,17 +60,23 @@ Variant parse_variant(const std::string& name) {
 }
 
 template <int D>
-void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
-  if (!surface.widened()) {
-    update_function(surface, surface.points().positions, pool);
-    return;
-  }
+std::vector<Vec<D>> Resampler<D>::walk_positions(const AmlsSurface<D>& surface, ThreadPool& pool) {
+  std::vector<Vec<D>> out = surface.points().positions;
   // Widened supports carry the surface across gaps wider than a walk's
   // block: walks over each sparse point's tangent disc reach its vertices.
-  std::vector<Vec<D>> walk_positions = surface.points().positions;
-  append_widened_walk_positions<D>(surface.points().positions, surface.pseudo_normals(), surface.support_radii(),
-                                   surface.radius(), surface.grid().spacing(), walk_positions, pool);
-  update_function(surface, walk_positions, pool);
+  if (surface.widened())
+    append_widened_walk_positions<D>(surface.points().positions, surface.pseudo_normals(), surface.support_radii(),
+                                     surface.radius(), surface.grid().spacing(), out, pool);
+  return out;
+}
+
+template <int D>
+void Resampler<D>::update_function(const AmlsSurface<D>& surface, ThreadPool& pool) {
+  if (!surface.widened()) {
+    update_function(surface, surface.points().positions, pool);  // no copy of the points
+    return;
+  }
+  update_function(surface, walk_positions(surface, pool), pool);
 }
 
 template <int D>

@@ -69,6 +69,10 @@ struct ResampleStats {
 template <int D>
 class Resampler {
  public:
+  // The positions whose walks Update_Function() covers: every point and,
+  // with widened supports, the positions over each widened point's tangent
+  // disc (core/surface/local_support.hpp).
+  static std::vector<Vec<D>> walk_positions(const AmlsSurface<D>& surface, ThreadPool& pool);
   // Update_Function().
   void update_function(const AmlsSurface<D>& surface, ThreadPool& pool);
   // Update_Function() at the vertices of the walks of `walk_positions` only

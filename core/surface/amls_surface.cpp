@@ -26,7 +26,17 @@ void AmlsSurface<D>::set_points(PointSet<D> points) {
     throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
                                 std::to_string(points.normals.size()) + " normals");
   points_ = std::move(points);
+  given_radii_.reset();
   hashed_ = ready_ = false;
+}
+
+template <int D>
+void AmlsSurface<D>::set_points(PointSet<D> points, std::vector<double> support_radii) {
+  if (support_radii.size() != points.positions.size())
+    throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
+                                std::to_string(support_radii.size()) + " support radii");
+  set_points(std::move(points));
+  given_radii_ = std::move(support_radii);
 }
 
 template <int D>
@@ -51,6 +61,11 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   sorted.reserve(order.size());
   for (const std::uint32_t id : order) sorted.add(points_.positions[id], points_.normals[id]);
   points_ = std::move(sorted);
+  if (given_radii_) {
+    std::vector<double> radii(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) radii[k] = (*given_radii_)[order[k]];
+    given_radii_ = std::move(radii);
+  }
   index_.renumber_in_cell_order();
   hashed_ = true;
   ready_ = false;
@@ -58,7 +73,12 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
 
 template <int D>
 void AmlsSurface<D>::widen_supports(ThreadPool& pool) {
-  support_radii_ = widened_support_radii<D>(points_.positions, radius_, grid_.spacing(), pool);
+  if (given_radii_)
+    support_radii_ = std::any_of(given_radii_->begin(), given_radii_->end(), [&](double r) { return r > radius_; })
+                         ? *given_radii_
+                         : std::vector<double>{};
+  else
+    support_radii_ = widened_support_radii<D>(points_.positions, radius_, grid_.spacing(), pool);
   supports_measured_ = true;
   if (!widened()) return;
   inverse_r2_.resize(support_radii_.size());
@@ -104,7 +124,7 @@ template <int D>
 NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
   if (!hashed_) hash_points(pool);
   // The supports follow the points as hashed, once per hash.
-  if (parameters_.widen_support && !supports_measured_) widen_supports(pool);
+  if ((parameters_.widen_support || given_radii_) && !supports_measured_) widen_supports(pool);
   const std::size_t n = points_.size();
   pseudo_normals_.resize(n);
   std::vector<FitStatus> status(n);

@@ -4,6 +4,7 @@
 // (Step 2) at any position.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -95,9 +96,15 @@ class AmlsSurface {
   // next hash_points() and update_normals().
   PointSet<D>& mutable_points() {
     ready_ = false;
+    given_radii_.reset();
     return points_;
   }
   void set_points(PointSet<D> points);
+  // The points with each one's Delta_i measured elsewhere (one per point, in
+  // their order), used instead of measuring it on these points: a part of a
+  // larger set whose points near the part's rim have neighbours outside it
+  // (local resampling). Delta_i = Delta for all is one Delta, not widened.
+  void set_points(PointSet<D> points, std::vector<double> support_radii);
 
   // Hash(): rebuilds the neighbour index (on `pool`: the same for any thread count).
   void hash_points();
@@ -183,6 +190,8 @@ class AmlsSurface {
   std::vector<std::uint32_t> wide_ids_;
   double widest_ = 0.0;
   bool supports_measured_ = false;  // widen_supports() ran since the last hash
+  // Delta_i given with the points (set_points), kept in the points' order.
+  std::optional<std::vector<double>> given_radii_;
   PointIndex<D> index_;
   std::vector<Vec<D>> pseudo_normals_;
   std::vector<double> offsets_;

@@ -17,6 +17,7 @@
 // making every neighbour query reach across the scan.
 #include <vector>
 
+#include "core/geometry/sample_spacing.hpp"
 #include "core/math/vec.hpp"
 #include "core/util/thread_pool.hpp"
 
@@ -24,6 +25,9 @@ namespace amls {
 
 inline constexpr double kRegularSpread = 1.25;
 inline constexpr double kMostWidening = 4.0;
+// A point's Delta_i depends only on the points within this many h of it: a
+// kth neighbour this far or farther gives the cap.
+inline constexpr double kSupportMeasureReach = kMostWidening * kRegularSpread * kSpacingNeighbourDivisor;
 // The walk around a widened point covers the disc of this many Delta_i in
 // its tangent plane: F is defined up to about 0.575 Delta_i from a lone
 // point (AmlsParameters::min_weight), and the gaps of a sparse region lie
