@@ -138,7 +138,7 @@ void EditorWorker::refresh_spacing() {
   if (!derived_ || derived_->dimension == 0 || derived_->spacing_version == derived_->points_version) return;
   set_phase("measuring the spacing", 0, 1);
   on_session([&](auto& s) {
-    CancelScope stop_for_commands(s.pool(), [this] { return queue_.size() > 0 || queue_.closed(); });
+    CancelScope stop_for_commands(s.pool(), control_while_waiting().cancelled);
     try {
       SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing, s.pool());
       auto snapshot = std::make_shared<Snapshot>(*derived_);

@@ -169,9 +169,9 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     report.interpolated_to_surface_mean_h = report.exact_to_surface_mean_h;
     report.interpolated_to_surface_max_h = report.exact_to_surface_max_h;
     Stopwatch clock;
-    surface.map_exactly();
+    const bool mapped = surface.map_exactly();
     report.finish_seconds = clock.lap();
-    measure(surface.points(), rest_tracers, surface.pool());
+    if (mapped) measure(surface.points(), rest_tracers, surface.pool());
   }
   return report;
 }
