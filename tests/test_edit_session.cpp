@@ -519,3 +519,34 @@ TEST_CASE("under local the end of a drag maps the points exactly, as the replay 
   CHECK(sorted(replayed.positions) == sorted(session.points().positions));
   CHECK(sorted(session.evaluable_surface().points().positions) == sorted(session.points().positions));
 }
+
+TEST_CASE("under local the loaded points can be resampled before the first step, which then only maps") {
+  EditSession<2> session = circle_with_two_handles();
+  CHECK_FALSE(session.prepare_local(kRunAll).changed);  // always: nothing to prepare
+  session.set_resampling(true, ResamplePolicy::parse("local"));
+  const WorkControl stop{[] { return true; }, {}};
+  const std::uint64_t loaded = session.version();
+  CHECK(session.prepare_local(stop).cancelled);
+  CHECK(session.version() == loaded);
+  const EditResult prepared = session.prepare_local(kRunAll);
+  REQUIRE(prepared.changed);
+  CHECK(prepared.resamples == 1);
+  CHECK(session.version() != loaded);
+  CHECK_FALSE(session.prepare_local(kRunAll).changed);  // the loop holds the points
+  std::vector<std::string> names;
+  const WorkControl control{{}, [&](const char* name, int, int) { names.push_back(name); }};
+  session.begin_drag();
+  std::vector<Vec<2>> to = session.handles();
+  to[1].x() = 1.15;
+  REQUIRE(session.move_handles(to, control).stepped);
+  CHECK(names == std::vector<std::string>{"deforming, resampling where strained"});
+  // The same points as a session whose first step resampled them.
+  EditSession<2> reference = circle_with_two_handles();
+  reference.set_resampling(true, ResamplePolicy::parse("local"));
+  reference.begin_drag();
+  REQUIRE(reference.move_handles(to, kRunAll).stepped);
+  CHECK(sorted(session.points().positions) == sorted(reference.points().positions));
+  session.map_exactly(kRunAll);  // as the replay ends
+  CHECK(sorted(amls::test::replay_with_amls_deform(session.recording()).positions) ==
+        sorted(session.points().positions));
+}

@@ -299,15 +299,58 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
 }
 
 template <int D>
+LocalDeformingSurface<D>& EditSession<D>::local_loop() {
+  if (!local_)
+    local_ = std::make_unique<LocalDeformingSurface<D>>(surface_->grid(), settings_.parameters(),
+                                                        settings_.variant, threads_);
+  return *local_;
+}
+
+template <int D>
+void EditSession<D>::start_local(EditResult& result) {
+  // Untouched points go in as loaded, as `amls deform` hands them over (see set_grid).
+  local_->set_points(recording_.untouched() ? initial_.points : surface_->points());
+  const LocalStepStats all = local_->resample_all();
+  add_stats(result, StepStats{all.timings, all.resample.normals, all.resample.resample, all.points_before,
+                              all.points_after});
+  ++result.resamples;
+}
+
+template <int D>
+EditResult EditSession<D>::prepare_local(const WorkControl& control) {
+  EditResult result;
+  if (!settings_.resample || settings_.policy.kind != ResamplePolicy::Kind::local || local_in_sync() ||
+      points().empty())
+    return result;
+  Phases phases(control, 1);
+  const bool finished = phases.run(local_loop().pool(), [&] {
+    if (!phases.next(kResamplingPhase)) return false;
+    start_local(result);
+    return true;
+  });
+  if (!finished) {
+    local_version_ = ~std::uint64_t{0};  // the next step starts from the surface's points
+    result = EditResult{};
+    result.cancelled = true;
+    return result;
+  }
+  recording_.resampled(settings_);
+  settled_ = true;
+  ++version_;
+  local_version_ = version_;
+  surface_behind_ = true;
+  result.changed = true;
+  return result;
+}
+
+template <int D>
 EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
                                                 const WorkControl& control) {
   // As `amls deform --resample local`: the points are resampled whole once
   // (the loaded shape, or points whose strain the loop does not know: after
   // resampling was off, or another policy), then each step maps them and
   // resamples where strained.
-  if (!local_)
-    local_ = std::make_unique<LocalDeformingSurface<D>>(surface_->grid(), settings_.parameters(),
-                                                        settings_.variant, threads_);
+  local_loop();
   const bool start = !local_in_sync();
   EditResult result;
   Phases phases(control, start ? 2 : 1);
@@ -316,12 +359,7 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
   const bool finished = phases.run(local_->pool(), [&] {
     if (start) {
       if (!phases.next(kResamplingPhase)) return false;
-      // Untouched points go in as loaded, as `amls deform` hands them over (see set_grid).
-      local_->set_points(recording_.untouched() ? initial_.points : surface_->points());
-      const LocalStepStats all = local_->resample_all();
-      add_stats(result, StepStats{all.timings, all.resample.normals, all.resample.resample, all.points_before,
-                                  all.points_after});
-      ++result.resamples;
+      start_local(result);
     }
     if (!phases.next("deforming, resampling where strained")) return false;
     const LocalStepStats step = local_->step(deformation);

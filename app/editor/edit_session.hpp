@@ -87,6 +87,11 @@ class EditSession {
   void begin_drag();
   EditResult move_handles(std::vector<Vec<D>> to, const WorkControl& control);
   bool cancel_drag();
+  // Under `local`, what the first step would do first, now: the points
+  // resampled whole into the local loop (the worker calls it once it waits
+  // for commands, so that the first drag on a large surface starts at once).
+  // Nothing to do under another policy or once the loop holds the points.
+  EditResult prepare_local(const WorkControl& control);
   // Under `local`, the end of a drag (the worker calls it once it waits for
   // commands): the points the last step left interpolated on the lattice are
   // mapped exactly (LocalDeformingSurface::map_exactly; `amls deform --resample
@@ -135,6 +140,10 @@ class EditSession {
   // After a stopped edit: the surface holds `before` again.
   void roll_back(PointSet<D> before);
   EditResult resample_now(const WorkControl& control);
+  // The local loop, made for this grid and variant if there is none.
+  LocalDeformingSurface<D>& local_loop();
+  // Resamples the current points whole into the local loop (the start of `local`).
+  void start_local(EditResult& result);
   // A handle move under the `local` policy.
   EditResult move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
                                   const WorkControl& control);

@@ -120,9 +120,13 @@ WorkControl EditorWorker::control_while_waiting() {
 
 void EditorWorker::work_while_waiting() {
   if (std::holds_alternative<std::monostate>(session_)) return;
-  bool mapped = false;
-  on_session([&](auto& s) { mapped = s.map_exactly(control_while_waiting()); });
-  if (mapped) {
+  bool changed = false;
+  on_session([&](auto& s) {
+    const EditResult prepared = s.prepare_local(control_while_waiting());
+    note_result(prepared);
+    changed = prepared.changed || s.map_exactly(control_while_waiting());
+  });
+  if (changed) {
     std::uint64_t processed = 0;
     {
       std::lock_guard lock(mutex_);

@@ -73,8 +73,10 @@ class EditorWorker {
   void start(const InitialShape& shape);
   void note_result(const EditResult& result);
   void publish(std::uint64_t processed);
-  // Once the queue is empty: ends a local drag (the points mapped exactly),
-  // then measures the spacing; each stops as soon as a command is queued.
+  // Once the queue is empty: under `local`, resamples newly loaded points
+  // whole (what the first step would do first) or ends a drag (the points
+  // mapped exactly); then measures the spacing. Each stops as soon as a
+  // command is queued.
   void work_while_waiting();
   // The control of work done while waiting: it stops once a command is queued.
   WorkControl control_while_waiting();
