@@ -245,8 +245,7 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
     result.changed = true;
     return result;
   }
-  if (settings_.resample && settings_.policy.kind == ResamplePolicy::Kind::local)
-    return move_handles_locally(deformation, std::move(to), control);
+  if (resamples_locally()) return move_handles_locally(deformation, std::move(to), control);
   // As `amls deform`, where the policy decides before step k whether to
   // resample and once more after the last step: here the decision for the
   // points a step made is taken right after it (the step that follows, if
@@ -319,9 +318,7 @@ void EditSession<D>::start_local(EditResult& result) {
 template <int D>
 EditResult EditSession<D>::prepare_local(const WorkControl& control) {
   EditResult result;
-  if (!settings_.resample || settings_.policy.kind != ResamplePolicy::Kind::local || local_in_sync() ||
-      points().empty())
-    return result;
+  if (!resamples_locally() || local_in_sync() || points().empty()) return result;
   Phases phases(control, 1);
   const bool finished = phases.run(local_loop().pool(), [&] {
     if (!phases.next(kResamplingPhase)) return false;

@@ -147,6 +147,10 @@ class EditSession {
   // A handle move under the `local` policy.
   EditResult move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
                                   const WorkControl& control);
+  // Whether steps resample under the `local` policy.
+  bool resamples_locally() const {
+    return settings_.resample && settings_.policy.kind == ResamplePolicy::Kind::local;
+  }
   // Whether the local loop holds the current points (its strain is theirs).
   bool local_in_sync() const { return local_ && local_version_ == version_; }
   // surface_, holding the current points: copied from the local loop if a local step left it behind.
