@@ -226,6 +226,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
       near.add(points.positions[i], points.normals[i]);
       near_ring.push_back(ring[i]);
     }
+  stats.rings_seconds = clock.lap();
 
   AmlsSurface<D> surface(grid_, parameters_);
   if (widen && rings) {
@@ -250,10 +251,11 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   } else {
     surface.set_points(std::move(near));
   }
+  stats.radii_seconds = clock.lap();
   stats.support = surface.points().size();
   surface.hash_points(pool);
   stats.normals = surface.update_normals(pool);
-  stats.normals_seconds = clock.lap();
+  stats.normals_seconds = stats.rings_seconds + stats.radii_seconds + clock.lap();
 
   // The whole surface's walks (with widened supports, over the widened
   // points' discs too) that reach R.

@@ -70,7 +70,9 @@ struct LocalResampleStats {
   std::size_t dropped_at_seam = 0;  // new points dropped for a kept point's vertex or nearness
   NormalStats normals;
   ResampleStats resample;  // of the resampler's run over the walked vertices
-  double normals_seconds = 0.0;
+  double normals_seconds = 0.0;   // choosing the support and fitting it, of which:
+  double rings_seconds = 0.0;     //   the flagged cells, their rings and every point's ring
+  double radii_seconds = 0.0;     //   widened supports: measuring Delta_i and growing the support to the widest
   double function_seconds = 0.0;
   double resample_seconds = 0.0;  // the resampler's walk and the splice
 };
