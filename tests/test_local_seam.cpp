@@ -28,7 +28,8 @@ PointSet<D> whole_resample(const PointSet<D>& points, const Grid<D>& grid, const
   return resampler.resample(surface, Variant::exact, pool);
 }
 
-// Resamples `points` where `flagged` says, with the local resampler; every other point's strain is just under the limit.
+// Resamples `points` where `flagged` says, with the local resampler; every other point's strain is just under the
+// limit.
 template <int D, typename Flagged>
 PointSet<D> local_resample(PointSet<D> points, const Grid<D>& grid, const AmlsParameters& parameters, bool fill,
                            Flagged&& flagged, ThreadPool& pool) {
@@ -86,8 +87,8 @@ double widest_gap(const std::vector<Vec<D>>& probes, const std::vector<Vec<D>>& 
 // to the points is at most 10 % above a whole resample's, and the strip's
 // new points are what keeps it there.
 template <int D, typename Sample>
-void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, std::size_t probes,
-                     const Grid<D>& grid, Sample&& sample) {
+void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, std::size_t probes, const Grid<D>& grid,
+                     Sample&& sample) {
   ThreadPool pool(2);
   const double h = grid.spacing();
   const double stretch = 1.1;
@@ -96,16 +97,16 @@ void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, st
   auto flagged = [&](const Vec<D>& p) { return p.x() < center.x(); };
   const double band = 4.0 * h + 3.0 * h + 3.0 * h;  // a region cell, Delta, and a gap's own width
   auto near_seam = [&](const Vec<D>& p) { return std::abs(p.x() - center.x()) < band; };
-  const double whole = widest_gap<D>(exact, whole_resample<D>(stretched, grid, AmlsParameters{}, pool).positions,
-                                     h, [](const Vec<D>&) { return true; });
+  const double whole = widest_gap<D>(exact, whole_resample<D>(stretched, grid, AmlsParameters{}, pool).positions, h,
+                                     [](const Vec<D>&) { return true; });
   auto at_seam = [&](bool fill) {
-    return widest_gap<D>(exact, local_resample<D>(stretched, grid, AmlsParameters{}, fill, flagged, pool).positions,
-                         h, near_seam);
+    return widest_gap<D>(exact, local_resample<D>(stretched, grid, AmlsParameters{}, fill, flagged, pool).positions, h,
+                         near_seam);
   };
   const double filled = at_seam(true);
   const double unfilled = at_seam(false);
-  MESSAGE("widest gap: whole resample " << whole << " h; at the seam " << filled << " h, without the strip "
-                                        << unfilled << " h");
+  MESSAGE("widest gap: whole resample " << whole << " h; at the seam " << filled << " h, without the strip " << unfilled
+                                        << " h");
   CHECK(filled <= 1.1 * whole);
   CHECK(unfilled > filled);
 }
@@ -126,32 +127,41 @@ TEST_CASE("local seam, 3D: next to points stretched near the strain limit, no ga
 
 namespace {
 
-// The points of `points` below z = `below`, sorted: to compare two sets.
-std::vector<Vec<3>> below(const PointSet<3>& points, double below) {
+// The points of `points` where `inside` holds, sorted: to compare two sets.
+template <typename Inside>
+std::vector<Vec<3>> sorted_where(const PointSet<3>& points, Inside&& inside) {
   std::vector<Vec<3>> out;
   for (const Vec<3>& p : points.positions)
-    if (p.z() < below) out.push_back(p);
+    if (inside(p)) out.push_back(p);
   std::sort(out.begin(), out.end(), [](const Vec<3>& a, const Vec<3>& b) {
     return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
   });
   return out;
 }
 
-// Resamples the points below z = `flag_below` locally and the whole surface:
-// well inside R (two region cells and the widest support below its edge) the
-// new points are the same.
+// Resamples the points where `flagged` holds locally and the whole surface:
+// where `inside` holds (well inside R) the new points are the same.
+template <typename Flagged, typename Inside>
 void check_inside_region(const PointSet<3>& points, const Grid<3>& grid, const AmlsParameters& parameters,
-                         double flag_below) {
+                         Flagged&& flagged, Inside&& inside) {
   ThreadPool pool(2);
   const PointSet<3> whole = whole_resample<3>(points, grid, parameters, pool);
-  const PointSet<3> local = local_resample<3>(points, grid, parameters, true,
-                                              [&](const Vec<3>& p) { return p.z() < flag_below; }, pool);
-  const double inside = flag_below - 8.0 * grid.spacing() - 4.0 * parameters.radius_factor * grid.spacing();
-  const std::vector<Vec<3>> a = below(whole, inside);
-  const std::vector<Vec<3>> b = below(local, inside);
+  const PointSet<3> local = local_resample<3>(points, grid, parameters, true, flagged, pool);
+  const std::vector<Vec<3>> a = sorted_where(whole, inside);
+  const std::vector<Vec<3>> b = sorted_where(local, inside);
   MESSAGE(a.size() << " new points well inside R");
   REQUIRE(a.size() > 100);
   CHECK(a == b);
+}
+
+// The points below z = `flag_below` resampled locally: below it by two region
+// cells and the widest support the new points are a whole resample's.
+void check_inside_region(const PointSet<3>& points, const Grid<3>& grid, const AmlsParameters& parameters,
+                         double flag_below) {
+  const double inside = flag_below - 8.0 * grid.spacing() - 4.0 * parameters.radius_factor * grid.spacing();
+  check_inside_region(
+      points, grid, parameters, [&](const Vec<3>& p) { return p.z() < flag_below; },
+      [&](const Vec<3>& p) { return p.z() < inside; });
 }
 
 }  // namespace
@@ -167,7 +177,8 @@ TEST_CASE("local seam: inside R the new points are those of a whole resample of 
   }
 }
 
-TEST_CASE("local seam: with widened supports, a sparse half is covered and inside R the points are a whole resample's") {
+TEST_CASE(
+    "local seam: with widened supports, a sparse half is covered and inside R the points are a whole resample's") {
   const PointSet<3> input = test::half_sparse_sphere(3000);
   const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
   const Grid<3> grid(Vec<3>::Constant(-1.5), h);
@@ -184,4 +195,48 @@ TEST_CASE("local seam: with widened supports, a sparse half is covered and insid
     CHECK(test::probes_in_holes(out.positions, probes, 1.5 * h) == 0);
   }
   check_inside_region(input, grid, parameters, 0.2);
+}
+
+TEST_CASE("local seam: with widened supports, small regions at the sparse half's edge are a whole resample's inside") {
+  // A few cells flagged: the support is grown for the widest Delta_i near
+  // each region, not for the widest of the surface. Inside the ball of
+  // flagged points, 2 h from any kept point (which can claim a new point's
+  // vertex only within h sqrt(3)), the new points are a whole resample's.
+  const PointSet<3> input = test::half_sparse_sphere(3000);
+  const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
+  const Grid<3> grid(Vec<3>::Constant(-1.5), h);
+  AmlsParameters parameters;
+  parameters.widen_support = true;
+  const double radius = 10.0 * h;
+  for (const Vec<3>& spot : {Vec<3>(1.0, 0.0, 0.15), Vec<3>(0.0, 1.0, -0.15)}) {
+    const Vec<3> at = spot.normalized();
+    check_inside_region(
+        input, grid, parameters, [&](const Vec<3>& p) { return (p - at).norm() < radius; },
+        [&](const Vec<3>& p) { return (p - at).norm() < radius - 2.0 * h; });
+  }
+}
+
+TEST_CASE("local seam: with widened supports, a region far from any sparse point fits what it fits with one Delta") {
+  // The rings grow for the widest Delta_i near R: at the dense pole of the
+  // half-sparse sphere (its sparse half about 13 region cells away), as far
+  // as with one Delta for all.
+  const PointSet<3> input = test::half_sparse_sphere(30000);
+  const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 30000).positions).h;
+  const Grid<3> grid(Vec<3>::Constant(-1.5), h);
+  ThreadPool pool(2);
+  auto support = [&](bool widen) {
+    AmlsParameters parameters;
+    parameters.widen_support = widen;
+    LocalResampler<3> resampler(grid, parameters, Variant::exact);
+    PointSet<3> points = input;
+    std::vector<float> strain(points.size(), 0.0F);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if ((points.positions[i] - Vec<3>::UnitZ()).norm() < 6.0 * h) strain[i] = 1.0F;
+    const LocalResampleStats stats = resampler.resample(points, strain, pool);
+    REQUIRE(stats.inserted > 0);
+    return stats.support;
+  };
+  const std::size_t widened = support(true);
+  MESSAGE(widened << " points fitted");
+  CHECK(widened == support(false));
 }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/geometry/point_index.hpp"
+#include "core/resample/region_rings.hpp"
 #include "core/surface/local_support.hpp"
 #include "core/util/flat_hash_map.hpp"
 #include "core/util/stopwatch.hpp"
@@ -26,51 +27,8 @@ constexpr double kCellInH = 4.0;
 // whose Pratt fits read their neighbours (4.5). In 2D (no offsets) 2 would
 // do; one reach for both keeps the rings simple.
 constexpr double kSupportHops = 4.5;
-// A point's ring: the Chebyshev distance, in region cells, from its cell to
-// the nearest flagged cell; beyond the rings measured, kOutside.
-constexpr std::uint8_t kOutside = std::numeric_limits<std::uint8_t>::max();
-
-template <int D>
-std::int64_t chebyshev(const IVec<D>& a, const IVec<D>& b) {
-  return (a - b).cwiseAbs().maxCoeff();
-}
-
-// The rings around the flagged cells, out to `reach`, with a box that holds them all for a quick rejection.
-template <int D>
-class Rings {
- public:
-  Rings(const Grid<D>& cells, const std::vector<IVec<D>>& flagged, std::int64_t reach) : cells_(cells) {
-    lo_ = hi_ = flagged.front();
-    for (const IVec<D>& f : flagged) {
-      lo_ = lo_.cwiseMin(f);
-      hi_ = hi_.cwiseMax(f);
-      for_each_index_in_box<D>(f.array() - reach, f.array() + reach, [&](const IVec<D>& c) {
-        const auto ring = static_cast<std::uint8_t>(chebyshev<D>(c, f));
-        auto [value, inserted] = ring_of_.try_emplace(Grid<D>::key(c));
-        *value = inserted ? ring : std::min(*value, ring);
-      });
-    }
-    lo_.array() -= reach;
-    hi_.array() += reach;
-  }
-
-  std::uint8_t ring(const Vec<D>& p) const {
-    const IVec<D> c = cells_.cell_of(p);
-    if ((c.array() < lo_.array()).any() || (c.array() > hi_.array()).any()) return kOutside;
-    const std::uint8_t* ring = ring_of_.find(Grid<D>::key(c));
-    return ring ? *ring : kOutside;
-  }
-  std::size_t cells_within(std::uint8_t ring) const {
-    std::size_t n = 0;
-    ring_of_.for_each([&](std::uint64_t, const std::uint8_t& r) { n += r <= ring ? 1 : 0; });
-    return n;
-  }
-
- private:
-  Grid<D> cells_;
-  IVec<D> lo_, hi_;
-  FlatHashMap<std::uint8_t> ring_of_;
-};
+// A point's ring (core/resample/region_rings.hpp); beyond the rings measured, kOutside.
+constexpr std::uint8_t kOutside = RegionRings<2>::kOutside;
 
 // How close, in h, the resampler puts two of its points at neighbouring
 // vertices: across a cell's diagonal, h / sqrt(2) (the least spacing of whole
@@ -198,60 +156,104 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   // The points F in the walked cells reads, for supports up to `widest`: the
   // walks' vertices lie within 2 h of their points.
   auto support_for = [&](double widest) { return walked + rings_for(kSupportHops * widest + 2.0 * h); };
-  // Widened supports: a point's Delta_i is measured from its neighbours, so
-  // every point that may matter for the widest support allowed is measured,
-  // on the points around it too, before the support is chosen.
+  // With widened supports, a point p_k that F in the walked cells reads
+  // lies within 3.5 W + 2 h + max(W, Delta_k) of them for the widest Delta_i
+  // W it meets before (see below); Delta_i is measured on the points within
+  // kSupportMeasureReach h of p_k.
+  const double most = kMostWidening * delta;
+  auto may_read = [&](double widest, double own) {
+    return walked + rings_for((kSupportHops - 1.0) * widest + 2.0 * h + std::max(widest, own));
+  };
   const bool widen = parameters_.widen_support;
-  const double widest_allowed = kMostWidening * delta;
-  const std::int64_t reach =
-      widen ? support_for(widest_allowed) + rings_for(kSupportMeasureReach * h) : support_for(delta);
-  if (reach >= kOutside) throw std::logic_error("local resampling: the support's rings do not fit a byte");
+  const std::int64_t most_reach =
+      widen ? may_read(most, most) + rings_for(kSupportMeasureReach * h) : support_for(delta);
   // With every point flagged (a start, or a whole-surface resample) every
   // point is in R: no rings to grow.
-  const bool everything = flagged_points == points.size();
-  const std::optional<Rings<D>> rings =
-      everything ? std::nullopt : std::optional<Rings<D>>(std::in_place, cells, flagged, reach);
+  std::optional<RegionRings<D>> rings;
+  if (flagged_points != points.size()) rings.emplace(cells, flagged, most_reach);
   auto ring_of = [&](const Vec<D>& p) { return rings ? rings->ring(p) : std::uint8_t{0}; };
-  stats.region_cells = rings ? rings->cells_within(static_cast<std::uint8_t>(region)) : flagged.size();
-
-  // Each point's ring, and the points within reach (in the points' order).
-  std::vector<std::uint8_t> ring(points.size());
-  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t i = begin; i < end; ++i) ring[i] = ring_of(points.positions[i]);
-  });
-  PointSet<D> near;
-  std::vector<std::uint8_t> near_ring;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (ring[i] != kOutside) {
-      near.add(points.positions[i], points.normals[i]);
-      near_ring.push_back(ring[i]);
-    }
-  stats.rings_seconds = clock.lap();
+  // Each point's ring, measured as the rings grow; only the points in the
+  // box the rings can grow over (in their order) are looked up again.
+  std::vector<std::uint8_t> ring(points.size(), rings ? kOutside : std::uint8_t{0});
+  std::vector<std::uint32_t> boxed;
+  if (rings) {
+    pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t i = begin; i < end; ++i) ring[i] = rings->may_reach(points.positions[i]) ? 0 : kOutside;
+    });
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+      if (ring[i] == 0) boxed.push_back(i);
+    ring.assign(points.size(), kOutside);
+  }
+  auto grow_rings = [&](std::int64_t reach) {
+    rings->grow_to(reach);
+    pool.parallel_for(boxed.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (ring[boxed[k]] == kOutside) ring[boxed[k]] = rings->ring(points.positions[boxed[k]]);
+    });
+    stats.rings_seconds += clock.lap();
+  };
+  // Those of the points `ids` within `reach`, in their order.
+  auto points_within = [&](std::int64_t reach, const std::vector<std::uint32_t>& ids) {
+    PointSet<D> out;
+    for (const std::uint32_t i : ids)
+      if (ring[i] <= reach) out.add(points.positions[i], points.normals[i]);
+    return out;
+  };
+  std::vector<std::uint32_t> near;  // the points within the rings, in their order
+  auto list_near = [&] {
+    near.clear();
+    for (const std::uint32_t i : boxed)
+      if (ring[i] != kOutside) near.push_back(i);
+  };
 
   AmlsSurface<D> surface(grid_, parameters_);
-  if (widen && rings) {
-    // Each Delta_i as the whole surface measures it: exact out to the
-    // measure's reach inside `reach`. The support is grown for the widest
-    // Delta_i that can reach the walked cells.
-    std::vector<double> radii = widened_support_radii<D>(near.positions, delta, h, pool);
-    if (radii.empty()) radii.assign(near.size(), delta);
-    const std::int64_t measured = support_for(widest_allowed);
+  if (!rings) {
+    surface.set_points(points);
+  } else if (!widen) {
+    grow_rings(support_for(delta));
+    list_near();
+    surface.set_points(points_within(support_for(delta), near));
+  } else {
+    // Each Delta_i as the whole surface measures it, and the support grown
+    // for the widest Delta_i that F in the walked cells reads. F reads a
+    // point through a chain of hops (kSupportHops: 4.5 supports in all), each
+    // no longer than the support of one of its ends. While every point met
+    // has Delta_i <= W, the chain stays within 3.5 W + 2 h of the walked
+    // cells before its last hop, so any point p_k it meets lies within
+    // 3.5 W + 2 h + max(W, Delta_k) of them: W holds when each point that
+    // near has Delta_k <= W. Starting from W = Delta, Delta_i is measured on
+    // the points that may be that near for any Delta_k up to the most
+    // allowed, and on those within the measure's reach of them (so that it
+    // is exact); W grows to the widest Delta_k that is that near, and the
+    // measure grows with it when its rings do. So the rings reach only as
+    // far as the supports near R ask, not as far as the widest allowed.
     double widest = delta;
-    for (std::size_t k = 0; k < near.size(); ++k)
-      if (near_ring[k] <= measured) widest = std::max(widest, radii[k]);
+    std::int64_t measured = -1;  // Delta_i is exact for the points within these rings
+    std::vector<double> radii;
+    for (;;) {
+      if (may_read(widest, most) > measured) {
+        measured = may_read(widest, most);
+        grow_rings(measured + rings_for(kSupportMeasureReach * h));
+        list_near();
+        std::vector<Vec<D>> positions(near.size());
+        for (std::size_t k = 0; k < near.size(); ++k) positions[k] = points.positions[near[k]];
+        radii = widened_support_radii<D>(positions, delta, h, pool);
+        if (radii.empty()) radii.assign(near.size(), delta);
+      }
+      double wider = widest;
+      for (std::size_t k = 0; k < near.size(); ++k)
+        if (ring[near[k]] <= may_read(widest, radii[k])) wider = std::max(wider, radii[k]);
+      stats.radii_seconds += clock.lap();
+      if (wider <= widest) break;
+      widest = wider;
+    }
     const std::int64_t support = support_for(widest);
-    PointSet<D> support_points;
     std::vector<double> support_radii;
     for (std::size_t k = 0; k < near.size(); ++k)
-      if (near_ring[k] <= support) {
-        support_points.add(near.positions[k], near.normals[k]);
-        support_radii.push_back(radii[k]);
-      }
-    surface.set_points(std::move(support_points), std::move(support_radii));
-  } else {
-    surface.set_points(std::move(near));
+      if (ring[near[k]] <= support) support_radii.push_back(radii[k]);
+    surface.set_points(points_within(support, near), std::move(support_radii));
   }
-  stats.radii_seconds = clock.lap();
+  stats.region_cells = rings ? rings->cells_within(region) : flagged.size();
   stats.support = surface.points().size();
   surface.hash_points(pool);
   stats.normals = surface.update_normals(pool);
