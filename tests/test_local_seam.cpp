@@ -199,10 +199,13 @@ TEST_CASE(
 
 TEST_CASE("local seam: with widened supports, small regions at the sparse half's edge are a whole resample's inside") {
   // A few cells flagged: the support is grown for the widest Delta_i near
-  // each region, not for the widest of the surface. Inside the ball of
-  // flagged points, 2 h from any kept point (which can claim a new point's
-  // vertex only within h sqrt(3)), the new points are a whole resample's.
-  const PointSet<3> input = test::half_sparse_sphere(3000);
+  // each region, not for the widest of the surface (a stray point far away
+  // has the widest allowed, 4 Delta; near the regions the widest is 3.67
+  // Delta). Inside the ball of flagged points, 2 h from any kept point (which
+  // can claim a new point's vertex only within h sqrt(3)), the new points are
+  // a whole resample's.
+  PointSet<3> input = test::half_sparse_sphere(3000);
+  input.add(Vec<3>(8.0, 0.0, 0.0), Vec<3>::UnitX());
   const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
   const Grid<3> grid(Vec<3>::Constant(-1.5), h);
   AmlsParameters parameters;

@@ -17,10 +17,13 @@
 // - F there reads the points within Delta_i, their offsets and pseudo-normals
 //   further points (4.5 supports in all): the support, every point within
 //   4.5 W + 2 h of the walked cells for the widest Delta_i W that can reach
-//   them, is fitted (Update_Normals). With widened supports each Delta_i is
-//   measured first on the points out to the widest allowed support (4 Delta)
-//   and the reach of that measure, so that it is the one the whole surface
-//   gives, and the support is then grown for the widest found;
+//   them, is fitted (Update_Normals). With widened supports W starts at
+//   Delta: each Delta_i is measured, as the whole surface measures it, for
+//   the points F could read if their own Delta_i were the widest allowed
+//   (4 Delta), and W grows to the widest of those F can read, the measure
+//   with it. The rings (core/resample/region_rings.hpp) grow only as far as
+//   that asks, so the cost follows R and the supports near it, not the
+//   widest support allowed;
 // - Update_Function and Resample run on those vertices only (Resampler with
 //   its own walk points); of the new points, those inside R replace the old
 //   points of R. Points outside R keep their positions and carried normals.

@@ -232,6 +232,7 @@ void AmlsSurface<D>::gather_widened(const Vec<D>& lo, const Vec<D>& hi, double r
   const double margin = radius - radius_;
   wide_index_.gather(lo, hi, margin + widest_, wide);
   const double r2 = radius * radius;
+  const std::size_t first = out.size();
   for (const std::uint32_t k : wide) {
     const std::uint32_t id = wide_ids_[k];
     const Vec<D>& q = points_.positions[id];
@@ -240,6 +241,11 @@ void AmlsSurface<D>::gather_widened(const Vec<D>& lo, const Vec<D>& hi, double r
     // Those within `radius` are in `out` already.
     if (outside2 > r2 && outside2 <= reach * reach) out.push_back(id);
   }
+  // In the points' order, not the wide index's: its cells are as wide as the
+  // widest Delta_i, which differs between a local resample's support and the
+  // whole surface, and the order of the sums over neighbours decides F's last
+  // bits (inside R a local resample is the whole surface's, bit for bit).
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
 
 template <int D>
