@@ -219,13 +219,17 @@ TEST_CASE("local seam: with widened supports, small regions at the sparse half's
   }
 }
 
-TEST_CASE("local seam: with widened supports, a region far from any sparse point fits what it fits with one Delta") {
+TEST_CASE("local seam: widened supports far from sparse points: one Delta's support, a whole resample's points") {
   // The rings grow for the widest Delta_i near R: at the dense pole of the
-  // half-sparse sphere (its sparse half about 13 region cells away), as far
-  // as with one Delta for all.
+  // half-sparse sphere (its sparse half about 23 region cells away), as far
+  // as with one Delta for all. Its support widens nothing, so it takes the
+  // path of one Delta while the whole surface takes the widened one: inside
+  // the ball of flagged points the new points are still the whole's.
   const PointSet<3> input = test::half_sparse_sphere(30000);
   const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 30000).positions).h;
   const Grid<3> grid(Vec<3>::Constant(-1.5), h);
+  const double radius = 10.0 * h;
+  auto flagged = [&](const Vec<3>& p) { return (p - Vec<3>::UnitZ()).norm() < radius; };
   ThreadPool pool(2);
   auto support = [&](bool widen) {
     AmlsParameters parameters;
@@ -234,7 +238,7 @@ TEST_CASE("local seam: with widened supports, a region far from any sparse point
     PointSet<3> points = input;
     std::vector<float> strain(points.size(), 0.0F);
     for (std::size_t i = 0; i < points.size(); ++i)
-      if ((points.positions[i] - Vec<3>::UnitZ()).norm() < 6.0 * h) strain[i] = 1.0F;
+      if (flagged(points.positions[i])) strain[i] = 1.0F;
     const LocalResampleStats stats = resampler.resample(points, strain, pool);
     REQUIRE(stats.inserted > 0);
     return stats.support;
@@ -242,4 +246,8 @@ TEST_CASE("local seam: with widened supports, a region far from any sparse point
   const std::size_t widened = support(true);
   MESSAGE(widened << " points fitted");
   CHECK(widened == support(false));
+  AmlsParameters parameters;
+  parameters.widen_support = true;
+  check_inside_region(input, grid, parameters, flagged,
+                      [&](const Vec<3>& p) { return (p - Vec<3>::UnitZ()).norm() < radius - 2.0 * h; });
 }

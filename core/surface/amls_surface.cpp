@@ -114,9 +114,12 @@ struct AmlsSurface<D>::WidenedSupport {
   static constexpr bool kWidened = true;
   const std::vector<double>& radii;
   const std::vector<double>& inverse_r2;
+  // Between two points of one support, the uniform measure's very
+  // arithmetic: a local resample whose support widens nothing takes the
+  // uniform path, and there its fits must be the whole surface's bit for bit.
   double measure(const Vec<D>& offset, std::uint32_t j, std::size_t i, Vec<D>& u) const {
-    u = offset / radii[i];
-    return offset.squaredNorm() * inverse_r2[j];
+    u = offset * (1.0 / radii[i]);
+    return radii[j] == radii[i] ? u.squaredNorm() : offset.squaredNorm() * inverse_r2[j];
   }
 };
 
