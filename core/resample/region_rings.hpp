@@ -81,7 +81,7 @@ class RegionRings {
   IVec<D> lo_, hi_;  // a box holding every cell measured, for a quick rejection
   IVec<D> box_lo_;   // the box of the most reach, and its size along each axis
   std::array<std::size_t, D> size_{};
-  std::vector<std::uint8_t> dense_;  // one byte per cell of that box; empty: sparse_
+  std::vector<std::uint8_t> dense_;    // one byte per cell of that box; empty: sparse_
   std::vector<std::ptrdiff_t> steps_;  // the 3^D - 1 neighbours' offsets in dense_
   FlatHashMap<std::uint8_t> sparse_;
   // The cells of the outermost ring: their slots in dense_, or themselves.
