@@ -172,24 +172,33 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   std::optional<RegionRings<D>> rings;
   if (flagged_points != points.size()) rings.emplace(cells, flagged, most_reach);
   auto ring_of = [&](const Vec<D>& p) { return rings ? rings->ring(p) : std::uint8_t{0}; };
-  // Each point's ring, measured as the rings grow; only the points in the
-  // box the rings can grow over (in their order) are looked up again.
+  // Each point's ring, measured as the rings grow. The first growth looks
+  // every point up; later ones only the points without a ring then whose
+  // cells the rings can reach (`pending`, listed at the second growth).
   std::vector<std::uint8_t> ring(points.size(), rings ? kOutside : std::uint8_t{0});
-  std::vector<std::uint32_t> boxed;
-  if (rings) {
-    pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-      for (std::size_t i = begin; i < end; ++i) ring[i] = rings->may_reach(points.positions[i]) ? 0 : kOutside;
-    });
-    for (std::uint32_t i = 0; i < points.size(); ++i)
-      if (ring[i] == 0) boxed.push_back(i);
-    ring.assign(points.size(), kOutside);
-  }
+  std::vector<std::uint32_t> pending;
+  int growths = 0;
   auto grow_rings = [&](std::int64_t reach) {
     rings->grow_to(reach);
-    pool.parallel_for(boxed.size(), [&](std::size_t begin, std::size_t end, int) {
-      for (std::size_t k = begin; k < end; ++k)
-        if (ring[boxed[k]] == kOutside) ring[boxed[k]] = rings->ring(points.positions[boxed[k]]);
-    });
+    if (growths++ == 0) {
+      pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t i = begin; i < end; ++i) ring[i] = rings->ring(points.positions[i]);
+      });
+    } else {
+      if (growths == 2) {
+        std::vector<std::uint8_t> reachable(points.size());
+        pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
+          for (std::size_t i = begin; i < end; ++i)
+            reachable[i] = ring[i] == kOutside && rings->may_reach(points.positions[i]);
+        });
+        for (std::uint32_t i = 0; i < points.size(); ++i)
+          if (reachable[i]) pending.push_back(i);
+      }
+      pool.parallel_for(pending.size(), [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t k = begin; k < end; ++k)
+          if (ring[pending[k]] == kOutside) ring[pending[k]] = rings->ring(points.positions[pending[k]]);
+      });
+    }
     stats.rings_seconds += clock.lap();
   };
   // Those of the points `ids` within `reach`, in their order.
@@ -202,7 +211,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   std::vector<std::uint32_t> near;  // the points within the rings, in their order
   auto list_near = [&] {
     near.clear();
-    for (const std::uint32_t i : boxed)
+    for (std::uint32_t i = 0; i < points.size(); ++i)
       if (ring[i] != kOutside) near.push_back(i);
   };
 
