@@ -172,12 +172,14 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   std::optional<RegionRings<D>> rings;
   if (flagged_points != points.size()) rings.emplace(cells, flagged, most_reach);
   auto ring_of = [&](const Vec<D>& p) { return rings ? rings->ring(p) : std::uint8_t{0}; };
-  // Each point's ring, measured as the rings grow. The first growth looks
-  // every point up; later ones only the points without a ring then whose
-  // cells the rings can reach (`pending`, listed at the second growth).
+  // Each point's ring, measured as the rings grow, and the points within
+  // them. The first growth looks every point up; later ones only the points
+  // without a ring then whose cells the rings can reach (`pending`, listed
+  // at the second growth).
   std::vector<std::uint8_t> ring(points.size(), rings ? kOutside : std::uint8_t{0});
   std::vector<std::uint32_t> pending;
   int growths = 0;
+  std::vector<std::uint32_t> near;  // in the points' order
   auto grow_rings = [&](std::int64_t reach) {
     rings->grow_to(reach);
     if (growths++ == 0) {
@@ -199,6 +201,9 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
           if (ring[pending[k]] == kOutside) ring[pending[k]] = rings->ring(points.positions[pending[k]]);
       });
     }
+    near.clear();
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+      if (ring[i] != kOutside) near.push_back(i);
     stats.rings_seconds += clock.lap();
   };
   // Those of the points `ids` within `reach`, in their order.
@@ -208,19 +213,12 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
       if (ring[i] <= reach) out.add(points.positions[i], points.normals[i]);
     return out;
   };
-  std::vector<std::uint32_t> near;  // the points within the rings, in their order
-  auto list_near = [&] {
-    near.clear();
-    for (std::uint32_t i = 0; i < points.size(); ++i)
-      if (ring[i] != kOutside) near.push_back(i);
-  };
 
   AmlsSurface<D> surface(grid_, parameters_);
   if (!rings) {
     surface.set_points(points);
   } else if (!widen) {
     grow_rings(support_for(delta));
-    list_near();
     surface.set_points(points_within(support_for(delta), near));
   } else {
     // Each Delta_i as the whole surface measures it, and the support grown
@@ -243,8 +241,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
       if (may_read(widest, most) > measured) {
         measured = may_read(widest, most);
         grow_rings(measured + rings_for(kSupportMeasureReach * h));
-        list_near();
-        std::vector<Vec<D>> positions(near.size());
+            std::vector<Vec<D>> positions(near.size());
         for (std::size_t k = 0; k < near.size(); ++k) positions[k] = points.positions[near[k]];
         radii = widened_support_radii<D>(positions, delta, h, pool);
         if (radii.empty()) radii.assign(near.size(), delta);
