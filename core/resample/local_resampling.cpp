@@ -241,7 +241,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
       if (may_read(widest, most) > measured) {
         measured = may_read(widest, most);
         grow_rings(measured + rings_for(kSupportMeasureReach * h));
-            std::vector<Vec<D>> positions(near.size());
+        std::vector<Vec<D>> positions(near.size());
         for (std::size_t k = 0; k < near.size(); ++k) positions[k] = points.positions[near[k]];
         radii = widened_support_radii<D>(positions, delta, h, pool);
         if (radii.empty()) radii.assign(near.size(), delta);
