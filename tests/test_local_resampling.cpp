@@ -122,6 +122,54 @@ TEST_CASE("local resampling, 3D: kept points unchanged, no hole, spacing across 
   CHECK(nearest_distance_stats<3>(probes.positions, c.out.positions, grid.spacing()).max < 1.25);
 }
 
+TEST_CASE("local resampling: flagged cells grow into the strained cells next to them, not across unstrained ones") {
+  const Grid<2> grid = Grid<2>::unit(64);
+  const Vec<2> center(0.5, 0.5);
+  ThreadPool pool(1);
+  const PointSet<2> circle = sample_circle(center, 0.3, 400);
+  const double limit = LocalResampleOptions{}.strain_limit;
+  // By angle: over the limit near 0, past 0.7 of it on to 0.8 rad (joined to
+  // the flagged cells), under it on to 1.6 rad (a gap of four region cells),
+  // past 0.7 again on to 2 rad (not joined), under it elsewhere.
+  auto angle_of = [&](const Vec<2>& p) { return std::atan2(p.y() - center.y(), p.x() - center.x()); };
+  std::vector<float> strain(circle.size());
+  for (std::size_t i = 0; i < circle.size(); ++i) {
+    const double a = angle_of(circle.positions[i]);
+    const bool warm = (a > 0.05 && a <= 0.8) || (a >= 1.6 && a <= 2.0);
+    strain[i] = static_cast<float>((a >= 0.0 && a <= 0.05) ? 2.0 * limit : warm ? 0.8 * limit : 0.1 * limit);
+  }
+  auto kept = [&](const PointSet<2>& out, double from, double to) {
+    std::size_t in_range = 0, unmoved = 0;
+    for (const Vec<2>& p : circle.positions) {
+      const double a = angle_of(p);
+      if (a < from || a > to) continue;
+      ++in_range;
+      if (std::find(out.positions.begin(), out.positions.end(), p) != out.positions.end()) ++unmoved;
+    }
+    REQUIRE(in_range > 0);
+    return static_cast<double>(unmoved) / static_cast<double>(in_range);
+  };
+  auto run = [&](double grow_above) {
+    LocalResampler<2> resampler(grid, AmlsParameters{}, Variant::exact);
+    LocalResampleOptions options;
+    options.grow_above = grow_above;
+    resampler.set_options(options);
+    PointSet<2> points = circle;
+    std::vector<float> s = strain;
+    const LocalResampleStats stats = resampler.resample(points, s, pool);
+    return std::pair{stats, points};
+  };
+  const auto [grown, grown_points] = run(LocalResampleOptions{}.grow_above);
+  const auto [alone, alone_points] = run(kNoGrowth);
+  CHECK(grown.flagged_cells > alone.flagged_cells);
+  // The joined strained arc is resampled with the flagged cells; without growth its far part is kept.
+  CHECK(kept(grown_points, 0.5, 0.8) == 0.0);
+  CHECK(kept(alone_points, 0.5, 0.8) == 1.0);
+  // The arc past the gap is kept either way, as is the unstrained rest.
+  CHECK(kept(grown_points, 1.6, 2.0) == 1.0);
+  CHECK(kept(grown_points, 2.5, 3.0) == 1.0);
+}
+
 TEST_CASE("local resampling: no strained point, nothing changes") {
   const Grid<2> grid = Grid<2>::unit(64);
   ThreadPool pool(1);
