@@ -262,6 +262,39 @@ TEST_CASE("local drag: its end maps the points exactly, and the drag's next step
   CHECK(paused->strain() == straight->strain());
 }
 
+TEST_CASE("local drag: a saved state within a drag holds no copy of the points, and restores them exactly") {
+  const double h = 0.3 * std::sqrt(0.83 * 4.0 * 3.14159265 / 8000.0);
+  LocalDeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, 2);
+  surface.set_points(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 8000));
+  surface.resample_all();
+  // At rest the points are not a map of anything: copied.
+  CHECK(surface.save().points.has_value());
+  const double pull = 0.1 * h;
+  for (std::size_t k = 0; k < 2; ++k) REQUIRE(surface.step(drag_step(pull, k)).resample.flagged_cells == 0);
+  const PointSet<3> before = surface.points();
+  const std::vector<float> strain_before = surface.strain();
+  LocalDeformingSurface<3>::Saved saved = surface.save();
+  CHECK_FALSE(saved.points.has_value());
+  // A step to undo, then another drag (a new rest state), then back.
+  const PointSet<3> after_step = [&] {
+    REQUIRE(surface.step(drag_step(pull, 2)).resample.flagged_cells == 0);
+    return surface.points();
+  }();
+  std::vector<Vec<3>> moved = drag_step(pull, 3).from(), target = moved;
+  target[1].x() += h;
+  REQUIRE(surface.step(MlsDeformation<3>(moved, target)).resample.flagged_cells == 0);
+  surface.restore(std::move(saved));
+  CHECK(surface.points().positions == before.positions);
+  CHECK(surface.points().normals == before.normals);
+  CHECK(surface.strain() == strain_before);
+  // The drag goes on as if the steps in between had not run.
+  REQUIRE(surface.step(drag_step(pull, 2)).resample.flagged_cells == 0);
+  CHECK(surface.points().positions == after_step.positions);
+  // Mapped exactly (a drag's end), the points are copied again.
+  REQUIRE(surface.map_exactly());
+  CHECK(surface.save().points.has_value());
+}
+
 TEST_CASE("local drag: a step that resamples maps every point exactly and starts a new rest state") {
   const double h = 0.3 * std::sqrt(0.83 * 4.0 * 3.14159265 / 6000.0);
   LocalDeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, 2);
