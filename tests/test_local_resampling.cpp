@@ -122,13 +122,62 @@ TEST_CASE("local resampling, 3D: kept points unchanged, no hole, spacing across 
   CHECK(nearest_distance_stats<3>(probes.positions, c.out.positions, grid.spacing()).max < 1.25);
 }
 
+TEST_CASE("local resampling: flagged cells grow into the strained cells next to them, not across unstrained ones") {
+  const Grid<2> grid = Grid<2>::unit(64);
+  const Vec<2> center(0.5, 0.5);
+  ThreadPool pool(1);
+  const PointSet<2> circle = sample_circle(center, 0.3, 400);
+  const double limit = LocalResampleOptions{}.strain_limit;
+  // By angle: over the limit near 0, past 0.7 of it on to 0.8 rad (joined to
+  // the flagged cells), under it on to 1.6 rad (a gap of four region cells),
+  // past 0.7 again on to 2 rad (not joined), under it elsewhere.
+  auto angle_of = [&](const Vec<2>& p) { return std::atan2(p.y() - center.y(), p.x() - center.x()); };
+  std::vector<float> strain(circle.size());
+  for (std::size_t i = 0; i < circle.size(); ++i) {
+    const double a = angle_of(circle.positions[i]);
+    const bool warm = (a > 0.05 && a <= 0.8) || (a >= 1.6 && a <= 2.0);
+    strain[i] = static_cast<float>((a >= 0.0 && a <= 0.05) ? 2.0 * limit : warm ? 0.8 * limit : 0.1 * limit);
+  }
+  auto kept = [&](const PointSet<2>& out, double from, double to) {
+    std::size_t in_range = 0, unmoved = 0;
+    for (const Vec<2>& p : circle.positions) {
+      const double a = angle_of(p);
+      if (a < from || a > to) continue;
+      ++in_range;
+      if (std::find(out.positions.begin(), out.positions.end(), p) != out.positions.end()) ++unmoved;
+    }
+    REQUIRE(in_range > 0);
+    return static_cast<double>(unmoved) / static_cast<double>(in_range);
+  };
+  auto run = [&](double grow_above) {
+    LocalResampler<2> resampler(grid, AmlsParameters{}, Variant::exact);
+    LocalResampleOptions options;
+    options.grow_above = grow_above;
+    resampler.set_options(options);
+    PointSet<2> points = circle;
+    std::vector<float> s = strain;
+    const LocalResampleStats stats = resampler.resample(points, s, pool);
+    return std::pair{stats, points};
+  };
+  const auto [grown, grown_points] = run(LocalResampleOptions{}.grow_above);
+  const auto [alone, alone_points] = run(kNoGrowth);
+  CHECK(grown.flagged_cells > alone.flagged_cells);
+  // The joined strained arc is resampled with the flagged cells; without growth its far part is kept.
+  CHECK(kept(grown_points, 0.5, 0.8) == 0.0);
+  CHECK(kept(alone_points, 0.5, 0.8) == 1.0);
+  // The arc past the gap is kept either way, as is the unstrained rest.
+  CHECK(kept(grown_points, 1.6, 2.0) == 1.0);
+  CHECK(kept(grown_points, 2.5, 3.0) == 1.0);
+}
+
 TEST_CASE("local resampling: no strained point, nothing changes") {
   const Grid<2> grid = Grid<2>::unit(64);
   ThreadPool pool(1);
   LocalResampler<2> resampler(grid, AmlsParameters{}, Variant::exact);
   PointSet<2> points = sample_circle(Vec<2>(0.5, 0.5), 0.3, 200);
   const PointSet<2> before = points;
-  std::vector<float> strain(points.size(), 0.1F);
+  // Under the limit, and past the fraction the flagged cells grow into: none is flagged, none grown into.
+  std::vector<float> strain(points.size(), static_cast<float>(0.9 * resampler.options().strain_limit));
   const LocalResampleStats stats = resampler.resample(points, strain, pool);
   CHECK(stats.flagged_cells == 0);
   CHECK(points.positions == before.positions);
@@ -211,6 +260,39 @@ TEST_CASE("local drag: its end maps the points exactly, and the drag's next step
     REQUIRE(s->step(drag_step(pull, 3)).resample.flagged_cells == 0);
   CHECK(paused->points().positions == straight->points().positions);
   CHECK(paused->strain() == straight->strain());
+}
+
+TEST_CASE("local drag: a saved state within a drag holds no copy of the points, and restores them exactly") {
+  const double h = 0.3 * std::sqrt(0.83 * 4.0 * 3.14159265 / 8000.0);
+  LocalDeformingSurface<3> surface(Grid<3>(Vec<3>::Zero(), h), AmlsParameters{}, Variant::exact, 2);
+  surface.set_points(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 8000));
+  surface.resample_all();
+  // At rest the points are not a map of anything: copied.
+  CHECK(surface.save().points.has_value());
+  const double pull = 0.1 * h;
+  for (std::size_t k = 0; k < 2; ++k) REQUIRE(surface.step(drag_step(pull, k)).resample.flagged_cells == 0);
+  const PointSet<3> before = surface.points();
+  const std::vector<float> strain_before = surface.strain();
+  LocalDeformingSurface<3>::Saved saved = surface.save();
+  CHECK_FALSE(saved.points.has_value());
+  // A step to undo, then another drag (a new rest state), then back.
+  const PointSet<3> after_step = [&] {
+    REQUIRE(surface.step(drag_step(pull, 2)).resample.flagged_cells == 0);
+    return surface.points();
+  }();
+  std::vector<Vec<3>> moved = drag_step(pull, 3).from(), target = moved;
+  target[1].x() += h;
+  REQUIRE(surface.step(MlsDeformation<3>(moved, target)).resample.flagged_cells == 0);
+  surface.restore(std::move(saved));
+  CHECK(surface.points().positions == before.positions);
+  CHECK(surface.points().normals == before.normals);
+  CHECK(surface.strain() == strain_before);
+  // The drag goes on as if the steps in between had not run.
+  REQUIRE(surface.step(drag_step(pull, 2)).resample.flagged_cells == 0);
+  CHECK(surface.points().positions == after_step.positions);
+  // Mapped exactly (a drag's end), the points are copied again.
+  REQUIRE(surface.map_exactly());
+  CHECK(surface.save().points.has_value());
 }
 
 TEST_CASE("local drag: a step that resamples maps every point exactly and starts a new rest state") {

@@ -29,7 +29,7 @@ PointSet<D> whole_resample(const PointSet<D>& points, const Grid<D>& grid, const
 }
 
 // Resamples `points` where `flagged` says, with the local resampler; every other point's strain is just under the
-// limit.
+// fraction of the limit the flagged cells grow into, as the kept points next to R are.
 template <int D, typename Flagged>
 PointSet<D> local_resample(PointSet<D> points, const Grid<D>& grid, const AmlsParameters& parameters, bool fill,
                            Flagged&& flagged, ThreadPool& pool) {
@@ -39,13 +39,13 @@ PointSet<D> local_resample(PointSet<D> points, const Grid<D>& grid, const AmlsPa
   resampler.set_options(options);
   std::vector<float> strain(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
-    strain[i] = flagged(points.positions[i]) ? 1.0F : static_cast<float>(0.9 * options.strain_limit);
+    strain[i] = flagged(points.positions[i]) ? 1.0F : static_cast<float>(0.9 * options.grow_above * options.strain_limit);
   resampler.resample(points, strain, pool);
   return points;
 }
 
 // A resample of `shape`, turned off the grid's edges and stretched about its
-// centre by `stretch`: the sampling the kept points have near the limit.
+// centre by `stretch`: a sampling as stretched as kept points get, or more.
 template <int D>
 PointSet<D> stretched_resample(const PointSet<D>& shape, const Vec<D>& center, double stretch, const Grid<D>& grid,
                                ThreadPool& pool) {
@@ -81,14 +81,14 @@ double widest_gap(const std::vector<Vec<D>>& probes, const std::vector<Vec<D>>& 
 }
 
 // A shape (`sample(radius, points)`: a circle or sphere about `center`)
-// resampled, stretched by 10 % (just under the strain limit), and its half
+// resampled, stretched by 10 % (more than the kept points next to R are), and its half
 // x < centre resampled locally: near the seam (R's edge lies within a region
 // cell and Delta of the plane x = centre) the widest gap from the exact shape
 // to the points is at most 10 % above a whole resample's, and the strip's
 // new points are what keeps it there.
 template <int D, typename Sample>
-void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, std::size_t probes, const Grid<D>& grid,
-                     Sample&& sample) {
+void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, std::size_t probes,
+                     const Grid<D>& grid, Sample&& sample) {
   ThreadPool pool(2);
   const double h = grid.spacing();
   const double stretch = 1.1;
@@ -97,29 +97,29 @@ void check_seam_gaps(const Vec<D>& center, double radius, std::size_t points, st
   auto flagged = [&](const Vec<D>& p) { return p.x() < center.x(); };
   const double band = 4.0 * h + 3.0 * h + 3.0 * h;  // a region cell, Delta, and a gap's own width
   auto near_seam = [&](const Vec<D>& p) { return std::abs(p.x() - center.x()) < band; };
-  const double whole = widest_gap<D>(exact, whole_resample<D>(stretched, grid, AmlsParameters{}, pool).positions, h,
-                                     [](const Vec<D>&) { return true; });
+  const double whole = widest_gap<D>(exact, whole_resample<D>(stretched, grid, AmlsParameters{}, pool).positions,
+                                     h, [](const Vec<D>&) { return true; });
   auto at_seam = [&](bool fill) {
-    return widest_gap<D>(exact, local_resample<D>(stretched, grid, AmlsParameters{}, fill, flagged, pool).positions, h,
-                         near_seam);
+    return widest_gap<D>(exact, local_resample<D>(stretched, grid, AmlsParameters{}, fill, flagged, pool).positions,
+                         h, near_seam);
   };
   const double filled = at_seam(true);
   const double unfilled = at_seam(false);
-  MESSAGE("widest gap: whole resample " << whole << " h; at the seam " << filled << " h, without the strip " << unfilled
-                                        << " h");
+  MESSAGE("widest gap: whole resample " << whole << " h; at the seam " << filled << " h, without the strip "
+                                        << unfilled << " h");
   CHECK(filled <= 1.1 * whole);
   CHECK(unfilled > filled);
 }
 
 }  // namespace
 
-TEST_CASE("local seam, 2D: next to points stretched near the strain limit, no gap wider than a whole resample's") {
+TEST_CASE("local seam, 2D: next to stretched kept points, no gap wider than a whole resample's") {
   const Vec<2> center(0.5, 0.5);
   check_seam_gaps<2>(center, 0.3, 400, 20000, Grid<2>::unit(128),
                      [&](double radius, std::size_t n) { return sample_circle(center, radius, n); });
 }
 
-TEST_CASE("local seam, 3D: next to points stretched near the strain limit, no gap wider than a whole resample's") {
+TEST_CASE("local seam, 3D: next to stretched kept points, no gap wider than a whole resample's") {
   const Vec<3> center(0.5, 0.5, 0.5);
   check_seam_gaps<3>(center, 0.2, 4000, 100000, Grid<3>::unit(64),
                      [&](double radius, std::size_t n) { return sample_sphere(center, radius, n); });
@@ -177,8 +177,7 @@ TEST_CASE("local seam: inside R the new points are those of a whole resample of 
   }
 }
 
-TEST_CASE(
-    "local seam: with widened supports, a sparse half is covered and inside R the points are a whole resample's") {
+TEST_CASE("local seam: with widened supports, a sparse half is covered and inside R the points are a whole resample's") {
   const PointSet<3> input = test::half_sparse_sphere(3000);
   const double h = sample_spacing<3>(sample_sphere(Vec<3>::Zero(), 1.0, 3000).positions).h;
   const Grid<3> grid(Vec<3>::Constant(-1.5), h);

@@ -10,6 +10,7 @@
 #include "core/deform/strain_lattice.hpp"
 #include "core/geometry/shapes.hpp"
 #include "core/resample/resample_policy.hpp"
+#include "core/run/flow_test.hpp"
 #include "core/run/local_deforming_surface.hpp"
 
 using namespace amls;
@@ -101,7 +102,8 @@ TEST_CASE("local loop with a velocity field: steps resample only where the flow 
   // The single vortex at 128^2: its first steps barely strain (t near 0 the
   // field is nearly rigid at the circle's scale), later ones stretch the curve.
   const Grid<2> grid = Grid<2>::unit(128);
-  LocalDeformingSurface<2> local(grid, AmlsParameters{}, Variant::exact, 2);
+  LocalDeformingSurface<2> local(grid, AmlsParameters{}, Variant::exact, 2,
+                                 flow_resample_options(FlowTestConfig{}.strain_limit));
   local.set_points(sample_circle(Vec<2>(0.5, 0.75), 0.15, 1000));
   const LocalStepStats first = local.resample_all();
   CHECK(first.resample.inserted == local.points().size());

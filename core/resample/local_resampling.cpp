@@ -120,6 +120,39 @@ void splice(PointSet<D>& points, std::vector<float>& strain, const std::vector<s
   strain = std::move(out_strain);
 }
 
+// The cells of the points over the strain limit, grown cell by cell into the
+// neighbouring cells whose points passed `grow_above` of it (see
+// LocalResampleOptions); `over_limit` counts the points over the limit.
+template <int D>
+std::vector<IVec<D>> flag_cells(const PointSet<D>& points, const std::vector<float>& strain, const Grid<D>& cells,
+                                const LocalResampleOptions& options, std::size_t& over_limit) {
+  const double limit = options.strain_limit;
+  const double warm_limit = options.grow_above * limit;
+  std::vector<IVec<D>> flagged;
+  FlatHashMap<std::uint8_t> flagged_keys;
+  FlatHashMap<std::uint8_t> warm_keys;
+  over_limit = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!(strain[i] > warm_limit)) continue;
+    const IVec<D> c = cells.cell_of(points.positions[i]);
+    if (!(strain[i] > limit)) {
+      warm_keys.try_emplace(Grid<D>::key(c));
+      continue;
+    }
+    ++over_limit;
+    if (flagged_keys.try_emplace(Grid<D>::key(c)).second) flagged.push_back(c);
+  }
+  if (flagged.empty()) return flagged;
+  for (std::size_t k = 0; k < flagged.size(); ++k) {
+    const IVec<D> c = flagged[k];  // a copy: push_back may move the vector
+    for_each_index_in_box<D>(c.array() - 1, c.array() + 1, [&](const IVec<D>& n) {
+      const std::uint64_t key = Grid<D>::key(n);
+      if (warm_keys.find(key) && flagged_keys.try_emplace(key).second) flagged.push_back(n);
+    });
+  }
+  return flagged;
+}
+
 }  // namespace
 
 template <int D>
@@ -136,17 +169,8 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   const double h = grid_.spacing();
   const double delta = parameters_.radius_factor * h;
   const Grid<D> cells(grid_.origin(), cell_size_);
-  std::vector<IVec<D>> flagged;
   std::size_t flagged_points = 0;
-  {
-    FlatHashMap<std::uint8_t> seen;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!(strain[i] > options_.strain_limit)) continue;
-      ++flagged_points;
-      const IVec<D> c = cells.cell_of(points.positions[i]);
-      if (seen.try_emplace(Grid<D>::key(c)).second) flagged.push_back(c);
-    }
-  }
+  const std::vector<IVec<D>> flagged = flag_cells<D>(points, strain, cells, options_, flagged_points);
   stats.flagged_cells = flagged.size();
   if (flagged.empty()) return stats;
 

@@ -52,19 +52,39 @@ struct LocalResampleOptions {
   // around it may have changed by about this fraction. The kept points next
   // to R are stretched by up to this much: on the drag scene
   // (assets/scenes/drag_sphere.json) 0.15 left the widest gap between the
-  // exact shape and the points 11 % above the whole resample's, 0.12 below it
-  // (docs/local-resampling.md).
-  double strain_limit = 0.12;
+  // exact shape and the points 11 % above the whole resample's, 0.12 below it.
+  // A resample also keeps the error of the F it fits in its new points, and
+  // F fitted to kept points strained by 0.12 where the surface bends most
+  // erred twice as far as on a whole resample's points; at 0.10 it did not
+  // (the 200k drag of `amls bench`; docs/local-resampling.md).
+  double strain_limit = 0.10;
   // Whether the new points of the strip just outside R are kept where no kept
   // point crowds them (see LocalResampler). The flows, whose limit keeps the
   // points within a few percent of their spacing, turn it off: there the
   // strip's points, added step after step, made the 128^3 Enright test grow
   // past 20 times its points (docs/local-resampling.md).
   bool fill_seam = true;
+  // The flagged cells grow, cell by cell, into the neighbouring cells whose
+  // points passed this fraction of the limit: a region is resampled whole
+  // when it first passes the limit rather than cell by cell over the next
+  // steps, each of which would keep the error of an F fitted to ever more
+  // strained neighbours (on the 200k drag, without this, two resamples in a
+  // row left twice the whole resample's largest error). kNoGrowth: none.
+  double grow_above = 0.7;
 };
 
+inline constexpr double kNoGrowth = 1.0;
+
+// The options of a flow's local loop (`vortex`, `enright`): a flow strains
+// the whole surface a little at every step, so grown into every cell past a
+// fraction of its low limit a region would soon be the whole surface; and
+// the strip's points are off (see fill_seam).
+inline LocalResampleOptions flow_resample_options(double strain_limit) {
+  return LocalResampleOptions{.strain_limit = strain_limit, .fill_seam = false, .grow_above = kNoGrowth};
+}
+
 struct LocalResampleStats {
-  std::size_t flagged_cells = 0;    // region cells with a point over the strain limit
+  std::size_t flagged_cells = 0;    // region cells with a point over the strain limit, and those grown into
   std::size_t region_cells = 0;     // of R (flagged cells grown by Delta)
   std::size_t replaced = 0;         // old points in R, removed
   std::size_t support = 0;          // points fitted (Update_Normals)

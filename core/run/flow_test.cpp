@@ -77,7 +77,7 @@ class LocalFlowLoop {
  public:
   LocalFlowLoop(const Grid<D>& grid, const AmlsParameters& parameters, Variant variant, int threads,
                 double strain_limit)
-      : surface_(grid, parameters, variant, threads, LocalResampleOptions{strain_limit, false}) {}
+      : surface_(grid, parameters, variant, threads, flow_resample_options(strain_limit)) {}
   void set_points(PointSet<D> points) { surface_.set_points(std::move(points)); }
   LocalStepStats resample_only() { return surface_.resample_all(); }
   LocalStepStats step(const Deformation<D>& deformation, double t0, double t1, bool) {

@@ -77,13 +77,23 @@ std::vector<Vec<D>> LocalDeformingSurface<D>::rest_handles() const {
 }
 
 template <int D>
+typename LocalDeformingSurface<D>::Saved LocalDeformingSurface<D>::save() const {
+  const bool mapped_on_lattice = rest_ && !exact_;
+  return Saved{mapped_on_lattice ? std::nullopt : std::optional<PointSet<D>>(points_), strain_, rest_, current_,
+               node_images_, exact_};
+}
+
+template <int D>
 void LocalDeformingSurface<D>::restore(Saved saved) {
-  points_ = std::move(saved.points);
   strain_ = std::move(saved.strain);
   rest_ = std::move(saved.rest);
   current_ = std::move(saved.current);
   node_images_ = std::move(saved.node_images);
   exact_ = saved.exact;
+  if (saved.points)
+    points_ = std::move(*saved.points);
+  else
+    rest_->lattice.map(map_from_rest(current_), rest_->points, points_, nullptr, nullptr, pool_);
 }
 
 template <int D>

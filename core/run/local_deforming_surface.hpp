@@ -22,6 +22,7 @@
 // lattice (core/deform/strain_lattice.hpp), then the points are deformed; it
 // ends any rest state.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/deform/mls_lattice.hpp"
@@ -95,16 +96,19 @@ class LocalDeformingSurface {
 
  public:
   // Everything a step reads: taken before a step and given back, the next
-  // step runs as if the one in between never had (a stopped step).
+  // step runs as if the one in between never had (a stopped step). Within a
+  // drag the points are the lattice's map of the rest state to `current`:
+  // then they are not copied (a million points at every step) but mapped
+  // again by restore(), the same way, to the same values.
   struct Saved {
-    PointSet<D> points;
+    std::optional<PointSet<D>> points;  // none: the lattice's map of rest to current
     std::vector<float> strain;
     std::shared_ptr<const Rest> rest;
     std::vector<Vec<D>> current;
     MlsNodeImages<D> node_images;
     bool exact = true;
   };
-  Saved save() const { return Saved{points_, strain_, rest_, current_, node_images_, exact_}; }
+  Saved save() const;
   void restore(Saved saved);
 
  private:
