@@ -64,7 +64,7 @@ int main(int argc, char** argv) try {
   worker.post(command::BeginDrag{});
   wait();
   std::printf("editor worker: %zu points, h = %.6g, %d threads, --resample %s; load and start %.2f s\n",
-              worker.snapshot()->points.size(), h, threads, policy.c_str(),
+              worker.snapshot()->points->input_count, h, threads, policy.c_str(),
               std::chrono::duration<double>(Clock::now() - load_start).count());
 
   // The first move resamples the loaded points whole (the session's start) unless the worker did while it

@@ -7,12 +7,55 @@
 #include <string>
 
 #include "core/geometry/point_index.hpp"
+#include "core/util/thread_pool.hpp"
 
 namespace amls {
 
 namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Converts every point into out.positions and out.normals at its own index; an
+// undrawable one gets a NaN position. Returns how many were undrawable.
+template <int D>
+std::size_t convert(const PointSet<D>& points, PreparedPoints& out, ThreadPool* pool) {
+  const std::size_t n = points.size();
+  out.positions.resize(n);
+  out.normals.resize(n);
+  std::vector<OwnCacheLine<std::size_t>> skipped(pool ? static_cast<std::size_t>(pool->threads()) : 1, {0});
+  auto body = [&](std::size_t begin, std::size_t end, int block) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const glm::vec3 p = to_vec3<D>(points.positions[i]);
+      const glm::vec3 normal = to_vec3<D>(points.normals[i]);
+      const float length = glm::length(normal);
+      const bool drawable = finite(p) && finite(normal) && length > 0.0f && std::isfinite(length);
+      out.positions[i] = drawable ? p : glm::vec3(std::numeric_limits<float>::quiet_NaN());
+      out.normals[i] = drawable ? normal / length : glm::vec3(0.0f);
+      if (!drawable) ++skipped[static_cast<std::size_t>(block)].value;
+    }
+  };
+  if (pool)
+    pool->parallel_for(n, body);
+  else
+    body(0, n, 0);
+  std::size_t total = 0;
+  for (const auto& s : skipped) total += s.value;
+  return total;
+}
+
+// Drops the undrawable points convert() marked, noting the input index of each kept one.
+void drop_undrawable(PreparedPoints& out) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.positions.size(); ++i) {
+    if (std::isnan(out.positions[i].x)) continue;
+    out.positions[kept] = out.positions[i];
+    out.normals[kept] = out.normals[i];
+    out.source_index.push_back(static_cast<std::uint32_t>(i));
+    ++kept;
+  }
+  out.positions.resize(kept);
+  out.normals.resize(kept);
+}
 
 }  // namespace
 
@@ -63,7 +106,7 @@ double estimate_spacing(const std::vector<Vec<D>>& positions) {
 }
 
 template <int D>
-PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing) {
+PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool) {
   if (points.normals.size() != points.positions.size())
     throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
                                 std::to_string(points.normals.size()) + " normals");
@@ -75,21 +118,8 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
   PreparedPoints out;
   out.dimension = D;
   out.input_count = points.size();
-  out.positions.reserve(points.size());
-  out.normals.reserve(points.size());
-  std::vector<std::uint32_t> kept;
-  kept.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const glm::vec3 p = to_vec3<D>(points.positions[i]);
-    const glm::vec3 n = to_vec3<D>(points.normals[i]);
-    const float length = glm::length(n);
-    if (!finite(p) || !finite(n) || !(length > 0.0f) || !std::isfinite(length)) continue;
-    out.positions.push_back(p);
-    out.normals.push_back(n / length);
-    kept.push_back(static_cast<std::uint32_t>(i));
-  }
-  out.skipped = points.size() - kept.size();
-  if (out.skipped > 0) out.source_index = std::move(kept);
+  out.skipped = convert<D>(points, out, pool);
+  if (out.skipped > 0) drop_undrawable(out);
 
   if (spacing) {
     out.spacing = *spacing;
@@ -110,8 +140,8 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
   return out;
 }
 
-template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>);
-template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>);
+template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>, ThreadPool*);
+template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>, ThreadPool*);
 template double estimate_spacing<2>(const std::vector<Vec<2>>&);
 template double estimate_spacing<3>(const std::vector<Vec<3>>&);
 

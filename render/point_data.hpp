@@ -10,6 +10,8 @@
 
 namespace amls {
 
+class ThreadPool;
+
 // A core position or normal as a float vector for GL; 2D gets z = 0.
 template <int D>
 glm::vec3 to_vec3(const Vec<D>& v) {
@@ -38,8 +40,10 @@ struct PreparedPoints {
 // otherwise it is estimated from the points. Throws std::invalid_argument if positions
 // and normals differ in number, the set is too large for 32-bit indices, or `spacing`
 // is given but not a positive finite number. Undrawable points are skipped and counted.
+// With a pool, the conversion runs on it (the editor's worker, every step of a drag);
+// the result is the same.
 template <int D>
-PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing);
+PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool = nullptr);
 
 // The median distance from a point to its nearest neighbour, over an evenly strided
 // subset of at most 4096 points (exact for smaller sets). All positions must be finite.

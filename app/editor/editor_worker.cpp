@@ -22,18 +22,19 @@ Vec<3> to_3d_vector(const Vec<D>& v) {
   return out;
 }
 
-template <int D>
-PointSet<3> points_3d(const PointSet<D>& points) {
-  if constexpr (D == 3) {
-    return points;
-  } else {
-    return to_3d(points);
-  }
-}
-
 std::string describe_count(std::size_t n, const char* what) { return std::to_string(n) + " " + what; }
 
 }  // namespace
+
+template <int D>
+std::shared_ptr<const PreparedPoints> EditorWorker::drawable_points(EditSession<D>& s) {
+  try {
+    return std::make_shared<const PreparedPoints>(prepare_points<D>(s.points(), s.settings().spacing, &s.pool()));
+  } catch (const std::exception& e) {
+    message(Message::Level::error, std::string("Cannot show the points: ") + e.what());
+    return std::make_shared<const PreparedPoints>();
+  }
+}
 
 EditorWorker::EditorWorker(WorkerOptions options)
     : options_(options), snapshot_(std::make_shared<const Snapshot>()), thread_([this] { run(); }) {}
@@ -356,7 +357,7 @@ void EditorWorker::publish(std::uint64_t processed) {
                             snapshot->spacing_version = derived_->spacing_version;
                             snapshot->curve = derived_->curve;
                           } else {
-                            snapshot->points = points_3d(s.points());
+                            snapshot->points = drawable_points(s);
                             // The spacing is measured by refresh_spacing(); until then the last one stands in.
                             if (derived_ && derived_load_ == load_id_ &&
                                 derived_->spacing_h.size() == s.points().size()) {

@@ -73,6 +73,9 @@ class EditorWorker {
   void start(const InitialShape& shape);
   void note_result(const EditResult& result);
   void publish(std::uint64_t processed);
+  // The session's points made ready to draw; none (and a message) if they cannot be drawn.
+  template <int D>
+  std::shared_ptr<const PreparedPoints> drawable_points(EditSession<D>& s);
   // Once the queue is empty: under `local`, resamples newly loaded points
   // whole (what the first step would do first) or ends a drag (the points
   // mapped exactly); then measures the spacing. Each stops as soon as a

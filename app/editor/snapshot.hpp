@@ -1,7 +1,9 @@
 #pragma once
 // What the editor's worker hands to the UI: immutable snapshots of the
-// session, its progress while it works, and messages for the status line. No GL.
+// session, its progress while it works, and messages for the status line. No GL
+// (render/point_data.hpp is the renderer's CPU side).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +11,7 @@
 #include "core/surface/curve_tracing.hpp"
 #include "core/run/deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
+#include "render/point_data.hpp"
 
 namespace amls::editor {
 
@@ -20,7 +23,11 @@ struct Snapshot {
   int dimension = 0;                 // 0: nothing loaded yet
   std::string name;
 
-  PointSet<3> points;               // 2D: z = 0
+  // The points ready to draw (float positions and unit normals, 2D: z = 0, the
+  // bounds, the undrawable ones left out): made once per point set on the
+  // worker's pool and shared by the snapshots of that set, so that the UI
+  // thread only uploads them and picks on them. Never null.
+  std::shared_ptr<const PreparedPoints> points = std::make_shared<const PreparedPoints>();
   // Each point's nearest-neighbour distance / h and their statistics, measured
   // on the points of `spacing_version`: while a drag runs, the spacing is
   // measured only when the worker waits for commands (it costs more than a
