@@ -1,9 +1,12 @@
 // What the editor pays to show a new point set of a million points: the
-// worker's share (copying the session's points into the snapshot) and the UI
-// thread's (the checks and the float conversion, then the GL upload; each
-// upload is finished with glFinish before the clock stops), on the current
-// machine's OpenGL (OSMesa's llvmpipe). The median of `repeats` runs each.
-//   amls_upload_bench [points] [repeats]   (defaults: 1000000 9)
+// worker's share (prepare_points on its pool: the checks, the float
+// conversion, the bounds) and the UI thread's (the GL upload, each finished
+// with glFinish before the clock stops), on the current machine's OpenGL
+// (OSMesa's llvmpipe). The upload is timed into a new store (the first point
+// set, or one past the store) and into the store of the last set, persistently
+// mapped where the context can and with glBufferSubData. The median of
+// `repeats` runs each.
+//   amls_upload_bench [points] [threads] [repeats]   (defaults: 1000000 2 9)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "core/geometry/shapes.hpp"
+#include "core/util/thread_pool.hpp"
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/point_buffers.hpp"
@@ -40,26 +44,34 @@ double median_ms(int repeats, const std::function<void()>& run) {
 int main(int argc, char** argv) try {
   using namespace amls;
   const std::size_t count = argc > 1 ? std::stoul(argv[1]) : 1000000;
-  const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 9;
+  const int threads = argc > 2 ? std::max(1, std::atoi(argv[2])) : 2;
+  const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 9;
   OffscreenContext context(64, 64);
   std::printf("amls_upload_bench: %zu points, %s, median of %d\n", count, context.renderer().c_str(), repeats);
   const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, count);
   const double spacing = 1e-3;
 
-  PointSet<3> copy;
-  const double copy_ms = median_ms(repeats, [&] {
-    copy = PointSet<3>();  // as the worker's snapshot: a new set each time
-    copy = sphere;
-  });
   PreparedPoints prepared;
-  const double prepare_ms = median_ms(repeats, [&] { prepared = prepare_points<3>(sphere, spacing); });
-  PointBuffers buffers;
-  const double upload_ms = median_ms(repeats, [&] {
+  const double alone_ms = median_ms(repeats, [&] { prepared = prepare_points<3>(sphere, spacing); });
+  ThreadPool pool(threads);
+  const double pooled_ms = median_ms(repeats, [&] { prepared = prepare_points<3>(sphere, spacing, &pool); });
+  std::printf("prepare_points: %.1f ms alone, %.1f ms on %d threads\n", alone_ms, pooled_ms, threads);
+
+  for (const BufferUpdate update : {BufferUpdate::best_available, BufferUpdate::sub_data}) {
+    const double new_store_ms = median_ms(repeats, [&] {
+      PointBuffers fresh(update);
+      fresh.upload(prepared);
+      glFinish();
+    });
+    PointBuffers buffers(update);
     buffers.upload(prepared);
-    glFinish();
-  });
-  std::printf("worker: copy the points %.1f ms\n", copy_ms);
-  std::printf("UI thread: prepare %.1f ms, GL upload %.1f ms\n", prepare_ms, upload_ms);
+    const double same_store_ms = median_ms(repeats, [&] {
+      buffers.upload(prepared);
+      glFinish();
+    });
+    std::printf("GL upload, %s: %.1f ms into a new store, %.1f ms into the last one\n",
+                buffers.persistent() ? "persistently mapped" : "glBufferSubData", new_store_ms, same_store_ms);
+  }
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "amls_upload_bench: %s\n", e.what());
