@@ -56,23 +56,28 @@ PointSet<D> moved(PointSet<D> points, double offset, double scale) {
   return points;
 }
 
-}  // namespace
-
-TEST_CASE("a changed point set of the same size, uploaded over the last, draws what a fresh renderer draws") {
-  OffscreenContext context(kSize, kSize);
-  const double spacing = 0.05;
-  const PointSet<3> first = sample_sphere(Vec<3>::Zero(), 1.0, 4000);
-  const PointSet<3> second = moved(first, 0.3, 0.7);
+// `second` uploaded over `first`, either way, draws something else than `first` and what a fresh renderer draws.
+template <int D>
+void check_replaced(const PointSet<D>& first, const PointSet<D>& second, double spacing) {
   for (const BufferUpdate update : kUpdates) {
     CAPTURE(name(update));
     SplatRenderer renderer(update);
     renderer.set_points(first, spacing);
     const Image before = draw(renderer);
     renderer.set_points(second, spacing);
+    CHECK(renderer.dimension() == D);
     const Image after = draw(renderer);
     CHECK(after != before);
     CHECK(after == fresh(second, spacing));
   }
+}
+
+}  // namespace
+
+TEST_CASE("a changed point set of the same size, uploaded over the last, draws what a fresh renderer draws") {
+  OffscreenContext context(kSize, kSize);
+  check_replaced(sample_sphere(Vec<3>::Zero(), 1.0, 4000), moved(sample_sphere(Vec<3>::Zero(), 1.0, 4000), 0.3, 0.7),
+                 0.05);
 }
 
 TEST_CASE("the renderer maps its point buffers persistently where the context can, and never when told not to") {
@@ -129,20 +134,8 @@ TEST_CASE("scalars uploaded over the last ones colour the new points as a fresh 
 
 TEST_CASE("a 2D point set uploaded over the last draws its dots where a fresh renderer does") {
   OffscreenContext context(kSize, kSize);
-  const double spacing = 0.03;
-  const PointSet<2> first = sample_circle(Vec<2>::Zero(), 1.0, 200);
-  const PointSet<2> second = moved(first, -0.2, 0.8);
-  for (const BufferUpdate update : kUpdates) {
-    CAPTURE(name(update));
-    SplatRenderer renderer(update);
-    renderer.set_points(first, spacing);
-    const Image before = draw(renderer);
-    renderer.set_points(second, spacing);
-    CHECK(renderer.dimension() == 2);
-    const Image after = draw(renderer);
-    CHECK(after != before);
-    CHECK(after == fresh(second, spacing));
-  }
+  check_replaced(sample_circle(Vec<2>::Zero(), 1.0, 200), moved(sample_circle(Vec<2>::Zero(), 1.0, 200), -0.2, 0.8),
+                 0.03);
 }
 
 TEST_CASE("points prepared on a thread pool are those prepared alone, undrawable ones left out alike") {
