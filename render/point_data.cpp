@@ -140,6 +140,25 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
   return out;
 }
 
+PreparedScalars prepare_scalars(std::span<const double> values, std::size_t input_count,
+                                std::span<const std::uint32_t> source_index) {
+  if (values.size() != input_count)
+    throw std::invalid_argument("got " + std::to_string(values.size()) + " scalars for a point set of " +
+                                std::to_string(input_count) + " points");
+  PreparedScalars out;
+  out.values.reserve(source_index.empty() ? values.size() : source_index.size());
+  auto take = [&](std::size_t i) { out.values.push_back(static_cast<float>(values[i])); };
+  if (source_index.empty())
+    for (std::size_t i = 0; i < values.size(); ++i) take(i);
+  else
+    for (std::uint32_t i : source_index) take(i);
+  glm::vec2 range{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+  for (float v : out.values)
+    if (std::isfinite(v)) range = {std::min(range.x, v), std::max(range.y, v)};
+  if (range.x <= range.y) out.range = range;
+  return out;
+}
+
 template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>, ThreadPool*);
 template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>, ThreadPool*);
 template double estimate_spacing<2>(const std::vector<Vec<2>>&);

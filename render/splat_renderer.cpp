@@ -64,24 +64,12 @@ PointUpload SplatRenderer::set_points(const PointSet<2>& points, std::optional<d
 }
 
 void SplatRenderer::set_scalars(std::span<const double> values) {
-  if (values.size() != input_count_)
-    throw std::invalid_argument("got " + std::to_string(values.size()) + " scalars for a point set of " +
-                                std::to_string(input_count_) + " points");
-  std::vector<float> drawable;
-  drawable.reserve(passes_->points.count());
-  auto take = [&](std::size_t i) { drawable.push_back(static_cast<float>(values[i])); };
-  if (source_index_.empty())
-    for (std::size_t i = 0; i < values.size(); ++i) take(i);
-  else
-    for (std::uint32_t i : source_index_) take(i);
-  glm::vec2 range{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
-  for (float v : drawable)
-    if (std::isfinite(v)) range = {std::min(range.x, v), std::max(range.y, v)};
-  passes_->points.upload_scalars(drawable);
-  if (range.x <= range.y)
-    scalar_range_ = range;
-  else
-    scalar_range_.reset();
+  set_scalars(prepare_scalars(values, input_count_, source_index_));
+}
+
+void SplatRenderer::set_scalars(const PreparedScalars& scalars) {
+  passes_->points.upload_scalars(scalars.values);
+  scalar_range_ = scalars.range;
 }
 
 void SplatRenderer::clear_scalars() {

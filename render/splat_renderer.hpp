@@ -54,6 +54,8 @@ class SplatRenderer {
   // quality; shown with ColorMode::scalar. NaN values get RenderOptions::missing_scalar_color.
   // Throws std::invalid_argument if the count differs.
   void set_scalars(std::span<const double> values);
+  // The same, prepared already (prepare_scalars) for the last set_points.
+  void set_scalars(const PreparedScalars& scalars);
   void clear_scalars();
 
   void set_handles(std::span<const Handle> handles);

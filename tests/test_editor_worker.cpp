@@ -74,7 +74,9 @@ TEST_CASE("the worker applies commands in order and each snapshot says which com
   CHECK(snapshot->steps == 1);
   CHECK(snapshot->has_last);
   CHECK(snapshot->last.timings.total() > 0.0);
-  CHECK(snapshot->spacing_h.size() == snapshot->points->input_count);
+  REQUIRE(snapshot->spacing_h);
+  CHECK(snapshot->spacing_h->values.size() == snapshot->points->input_count);
+  CHECK(snapshot->spacing_h->drawn.values.size() == snapshot->points->size());
   CHECK(!snapshot->curve.empty());
   CHECK(snapshot->can_undo);
   CHECK(snapshot->recorded_steps == 1);
@@ -439,7 +441,7 @@ TEST_CASE("a move's snapshot comes before its spacing is measured, which follows
   CHECK(stepped.points_version != loaded->points_version);
   // The step's snapshot carries the spacing measured before it, marked as such.
   CHECK(stepped.spacing_version == loaded->spacing_version);
-  CHECK(stepped.spacing_h == loaded->spacing_h);
+  CHECK(stepped.spacing_h == loaded->spacing_h);  // shared
   // Then the same points, measured.
   CHECK(measured.generation > stepped.generation);
   CHECK(measured.points_version == stepped.points_version);
@@ -453,7 +455,11 @@ TEST_CASE("a move's snapshot comes before its spacing is measured, which follows
   const LoadedPointSet written = read_point_set(dir.file("points.ply"));
   REQUIRE(prepare_points<3>(written.points, 1.0).positions == measured.points->positions);
   ThreadPool pool(1);
-  CHECK(measured.spacing_h == sampling_quality(written.points, measured.settings.spacing, pool).spacing_h);
+  REQUIRE(measured.spacing_h);
+  CHECK(measured.spacing_h->values == sampling_quality(written.points, measured.settings.spacing, pool).spacing_h);
+  const PreparedScalars drawn = prepare_scalars(measured.spacing_h->values, measured.points->input_count, {});
+  CHECK(measured.spacing_h->drawn.values == drawn.values);
+  CHECK(measured.spacing_h->drawn.range == drawn.range);
 }
 
 TEST_CASE("a snapshot's points are ready to draw, made once per point set and shared by its snapshots") {

@@ -173,8 +173,8 @@ void EditorApp::take_snapshot() {
                                          : 0.0f);
     }
     if (new_points || next->spacing_version != shown_->spacing_version) {
-      if (next->spacing_h.size() == next->points->input_count)
-        renderer_->set_scalars(next->spacing_h);
+      if (next->spacing_h)
+        renderer_->set_scalars(next->spacing_h->drawn);
       else
         renderer_->clear_scalars();
     }

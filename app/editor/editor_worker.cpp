@@ -32,7 +32,10 @@ std::shared_ptr<const PreparedPoints> EditorWorker::drawable_points(EditSession<
     return std::make_shared<const PreparedPoints>(prepare_points<D>(s.points(), s.settings().spacing, &s.pool()));
   } catch (const std::exception& e) {
     message(Message::Level::error, std::string("Cannot show the points: ") + e.what());
-    return std::make_shared<const PreparedPoints>();
+    PreparedPoints none;
+    none.dimension = D;
+    none.spacing = s.settings().spacing;
+    return std::make_shared<const PreparedPoints>(std::move(none));
   }
 }
 
@@ -148,7 +151,10 @@ void EditorWorker::refresh_spacing() {
       SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing, s.pool());
       auto snapshot = std::make_shared<Snapshot>(*derived_);
       snapshot->generation = ++generation_;
-      snapshot->spacing_h = std::move(quality.spacing_h);
+      auto measured = std::make_shared<SpacingPerPoint>();
+      measured->values = std::move(quality.spacing_h);
+      measured->drawn = prepare_scalars(measured->values, snapshot->points->input_count, snapshot->points->source_index);
+      snapshot->spacing_h = std::move(measured);
       snapshot->spacing = quality.stats;
       snapshot->spacing_version = snapshot->points_version;
       derived_ = snapshot;
@@ -358,9 +364,11 @@ void EditorWorker::publish(std::uint64_t processed) {
                             snapshot->curve = derived_->curve;
                           } else {
                             snapshot->points = drawable_points(s);
-                            // The spacing is measured by refresh_spacing(); until then the last one stands in.
-                            if (derived_ && derived_load_ == load_id_ &&
-                                derived_->spacing_h.size() == s.points().size()) {
+                            // The spacing is measured by refresh_spacing(); until then the last one stands in
+                            // (its colours, when they are in the order of the new drawable points).
+                            if (derived_ && derived_load_ == load_id_ && derived_->spacing_h &&
+                                derived_->spacing_h->values.size() == s.points().size() &&
+                                derived_->points->source_index == snapshot->points->source_index) {
                               snapshot->spacing_h = derived_->spacing_h;
                               snapshot->spacing = derived_->spacing;
                               snapshot->spacing_version = derived_->spacing_version;

@@ -15,6 +15,13 @@
 
 namespace amls::editor {
 
+// Each point's nearest-neighbour distance / h, in the points' order and ready
+// to draw with them (the colours of `Snapshot::points`).
+struct SpacingPerPoint {
+  std::vector<double> values;
+  PreparedScalars drawn;
+};
+
 struct Snapshot {
   std::uint64_t generation = 0;      // increases with every snapshot
   std::uint64_t processed = 0;       // the sequence number of the last command applied
@@ -32,8 +39,8 @@ struct Snapshot {
   // on the points of `spacing_version`: while a drag runs, the spacing is
   // measured only when the worker waits for commands (it costs more than a
   // local step on a million points), and a snapshot carries the last
-  // measurement while the point count stays (empty when it changed).
-  std::vector<double> spacing_h;
+  // measurement, shared, while the point count stays (null when it changed).
+  std::shared_ptr<const SpacingPerPoint> spacing_h;
   SpacingStats spacing;
   static constexpr std::uint64_t kNotMeasured = ~std::uint64_t{0};
   std::uint64_t spacing_version = kNotMeasured;
