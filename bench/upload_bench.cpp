@@ -1,9 +1,10 @@
-// What the editor pays to show a new point set of a million points: the
-// worker's share (prepare_points on its pool: the checks, the float
-// conversion, the bounds) and the UI thread's (the GL upload, each finished
-// with glFinish before the clock stops), on the current machine's OpenGL
-// (OSMesa's llvmpipe). The upload is timed into a new store (the first point
-// set, or one past the store) and into the store of the last set, persistently
+// What the editor pays to show a new point set of a million points, as
+// EditorWorker and EditorApp::take_snapshot do it: the worker's share
+// (prepare_points on its pool: the checks, the float conversion, the bounds)
+// and the UI thread's (the points and their colours handed to the renderer,
+// finished with glFinish before the clock stops), on the current machine's
+// OpenGL (OSMesa's llvmpipe). The UI's share is timed into the buffers of the
+// last point set (a drag's steps) and into new ones (a load), persistently
 // mapped where the context can and with glBufferSubData. The median of
 // `repeats` runs each.
 //   amls_upload_bench [points] [threads] [repeats]   (defaults: 1000000 2 9)
@@ -20,8 +21,8 @@
 #include "core/util/thread_pool.hpp"
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
-#include "render/point_buffers.hpp"
 #include "render/point_data.hpp"
+#include "render/splat_renderer.hpp"
 
 namespace {
 
@@ -51,26 +52,30 @@ int main(int argc, char** argv) try {
   const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, count);
   const double spacing = 1e-3;
 
-  PreparedPoints prepared;
-  const double alone_ms = median_ms(repeats, [&] { prepared = prepare_points<3>(sphere, spacing); });
+  PreparedPoints points;
+  const double alone_ms = median_ms(repeats, [&] { points = prepare_points<3>(sphere, spacing); });
   ThreadPool pool(threads);
-  const double pooled_ms = median_ms(repeats, [&] { prepared = prepare_points<3>(sphere, spacing, &pool); });
-  std::printf("prepare_points: %.1f ms alone, %.1f ms on %d threads\n", alone_ms, pooled_ms, threads);
+  const double pooled_ms = median_ms(repeats, [&] { points = prepare_points<3>(sphere, spacing, &pool); });
+  std::printf("worker, per point set: prepare_points %.1f ms alone, %.1f ms on %d threads\n", alone_ms, pooled_ms,
+              threads);
+  // The spacing's colours, as the worker makes them once per measurement.
+  const PreparedScalars colors = prepare_scalars(std::vector<double>(count, 1.0), count, {});
 
   for (const BufferUpdate update : {BufferUpdate::best_available, BufferUpdate::sub_data}) {
-    const double new_store_ms = median_ms(repeats, [&] {
-      PointBuffers fresh(update);
-      fresh.upload(prepared);
+    auto adopt = [&](SplatRenderer& renderer) {
+      renderer.set_points(points);
+      renderer.set_scalars(colors);
       glFinish();
+    };
+    const double new_ms = median_ms(repeats, [&] {
+      SplatRenderer fresh(update);
+      adopt(fresh);
     });
-    PointBuffers buffers(update);
-    buffers.upload(prepared);
-    const double same_store_ms = median_ms(repeats, [&] {
-      buffers.upload(prepared);
-      glFinish();
-    });
-    std::printf("GL upload, %s: %.1f ms into a new store, %.1f ms into the last one\n",
-                buffers.persistent() ? "persistently mapped" : "glBufferSubData", new_store_ms, same_store_ms);
+    SplatRenderer renderer(update);
+    adopt(renderer);
+    const double last_ms = median_ms(repeats, [&] { adopt(renderer); });
+    std::printf("UI thread, per snapshot (points and colours), %s: %.1f ms into the last buffers, %.1f ms into new ones\n",
+                renderer.persistent_point_buffers() ? "persistently mapped" : "glBufferSubData", last_ms, new_ms);
   }
   return 0;
 } catch (const std::exception& e) {

@@ -107,6 +107,13 @@ double estimate_spacing(const std::vector<Vec<D>>& positions) {
 
 template <int D>
 PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool) {
+  PreparedPoints out;
+  prepare_points<D>(points, spacing, pool, out);
+  return out;
+}
+
+template <int D>
+void prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool, PreparedPoints& out) {
   if (points.normals.size() != points.positions.size())
     throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
                                 std::to_string(points.normals.size()) + " normals");
@@ -115,7 +122,10 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
   if (spacing && !(*spacing > 0.0 && std::isfinite(*spacing)))
     throw std::invalid_argument("point spacing must be a positive finite number, got " + std::to_string(*spacing));
 
-  PreparedPoints out;
+  FloatPoints positions = std::move(out.positions), normals = std::move(out.normals);
+  out = PreparedPoints{};  // of the old contents only the arrays' memory is kept
+  out.positions = std::move(positions);
+  out.normals = std::move(normals);
   out.dimension = D;
   out.input_count = points.size();
   out.skipped = convert<D>(points, out, pool);
@@ -137,7 +147,6 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
     out.spacing = out.bounds.radius > 0.0f ? out.bounds.radius / 16.0 : 1.0;
   }
   if (!out.bounds.empty()) out.bounds.radius += static_cast<float>(out.spacing);
-  return out;
 }
 
 PreparedScalars prepare_scalars(std::span<const double> values, std::size_t input_count,
@@ -161,6 +170,8 @@ PreparedScalars prepare_scalars(std::span<const double> values, std::size_t inpu
 
 template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>, ThreadPool*);
 template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>, ThreadPool*);
+template void prepare_points<2>(const PointSet<2>&, std::optional<double>, ThreadPool*, PreparedPoints&);
+template void prepare_points<3>(const PointSet<3>&, std::optional<double>, ThreadPool*, PreparedPoints&);
 template double estimate_spacing<2>(const std::vector<Vec<2>>&);
 template double estimate_spacing<3>(const std::vector<Vec<3>>&);
 

@@ -79,6 +79,10 @@ PreparedScalars prepare_scalars(std::span<const double> values, std::size_t inpu
 // the result is the same.
 template <int D>
 PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool = nullptr);
+// The same into `out`, in the memory of its arrays where they are large enough: a
+// caller that prepares point set after point set need not have new pages for each.
+template <int D>
+void prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool, PreparedPoints& out);
 
 // The median distance from a point to its nearest neighbour, over an evenly strided
 // subset of at most 4096 points (exact for smaller sets). All positions must be finite.

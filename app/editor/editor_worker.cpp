@@ -29,7 +29,7 @@ std::string describe_count(std::size_t n, const char* what) { return std::to_str
 template <int D>
 std::shared_ptr<const PreparedPoints> EditorWorker::drawable_points(EditSession<D>& s) {
   try {
-    return std::make_shared<const PreparedPoints>(prepare_points<D>(s.points(), s.settings().spacing, &s.pool()));
+    return recycler_.prepare<D>(s.points(), s.settings().spacing, s.pool());
   } catch (const std::exception& e) {
     message(Message::Level::error, std::string("Cannot show the points: ") + e.what());
     PreparedPoints none;

@@ -17,6 +17,7 @@
 
 #include "app/editor/command_queue.hpp"
 #include "app/editor/edit_session.hpp"
+#include "app/editor/point_recycler.hpp"
 #include "app/editor/snapshot.hpp"
 
 namespace amls::editor {
@@ -111,6 +112,7 @@ class EditorWorker {
   std::uint64_t curve_version_ = ~std::uint64_t{0};
   Clock::time_point last_trace_{};
   std::shared_ptr<const Snapshot> derived_;
+  PointRecycler recycler_;
 
   // Shared with the UI thread.
   mutable std::mutex mutex_;
