@@ -1,6 +1,7 @@
 // What the editor pays to show a new point set of a million points, as
 // EditorWorker and EditorApp::take_snapshot do it: the worker's share
-// (prepare_points on its pool: the checks, the float conversion, the bounds)
+// (prepare_points on its pool: the checks, the float conversion, the bounds;
+// into new memory, and into the memory of points let go, as during a drag)
 // and the UI thread's (the points and their colours handed to the renderer,
 // finished with glFinish before the clock stops), on the current machine's
 // OpenGL (OSMesa's llvmpipe). The UI's share is timed into the buffers of the
@@ -28,10 +29,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The median milliseconds of `repeats` calls of `run`.
-double median_ms(int repeats, const std::function<void()>& run) {
+// The median milliseconds of `repeats` calls of `run`, each after an untimed call of `setup`.
+double median_ms(int repeats, const std::function<void()>& run, const std::function<void()>& setup = [] {}) {
   std::vector<double> ms;
   for (int k = 0; k < repeats; ++k) {
+    setup();
     const Clock::time_point start = Clock::now();
     run();
     ms.push_back(1e3 * std::chrono::duration<double>(Clock::now() - start).count());
@@ -56,8 +58,12 @@ int main(int argc, char** argv) try {
   const double alone_ms = median_ms(repeats, [&] { points = prepare_points<3>(sphere, spacing); });
   ThreadPool pool(threads);
   const double pooled_ms = median_ms(repeats, [&] { points = prepare_points<3>(sphere, spacing, &pool); });
-  std::printf("worker, per point set: prepare_points %.1f ms alone, %.1f ms on %d threads\n", alone_ms, pooled_ms,
-              threads);
+  // As the worker's PointRecycler does during a drag: into the memory of points let go.
+  const double reused_ms = median_ms(repeats, [&] { prepare_points<3>(sphere, spacing, &pool, points); });
+  std::printf("worker, per point set: prepare_points %.1f ms alone, %.1f ms on %d threads, %.1f ms so into reused "
+              "memory\n",
+              alone_ms, pooled_ms, threads, reused_ms);
+  const PreparedPoints few = prepare_points<3>(sample_sphere(Vec<3>::Zero(), 1.0, 10), spacing);
   // The spacing's colours, as the worker makes them once per measurement.
   const PreparedScalars colors = prepare_scalars(std::vector<double>(count, 1.0), count, {});
 
@@ -67,13 +73,11 @@ int main(int argc, char** argv) try {
       renderer.set_scalars(colors);
       glFinish();
     };
-    const double new_ms = median_ms(repeats, [&] {
-      SplatRenderer fresh(update);
-      adopt(fresh);
-    });
     SplatRenderer renderer(update);
     adopt(renderer);
     const double last_ms = median_ms(repeats, [&] { adopt(renderer); });
+    // Ten points before: their buffers are far too small for the next set.
+    const double new_ms = median_ms(repeats, [&] { adopt(renderer); }, [&] { renderer.set_points(few); });
     std::printf("UI thread, per snapshot (points and colours), %s: %.1f ms into the last buffers, %.1f ms into new ones\n",
                 renderer.persistent_point_buffers() ? "persistently mapped" : "glBufferSubData", last_ms, new_ms);
   }

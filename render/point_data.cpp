@@ -15,15 +15,32 @@ namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// body(begin, end, block) over [0, n): on the pool's threads if there is one, else at once here.
+std::size_t blocks_of(const ThreadPool* pool) { return pool ? static_cast<std::size_t>(pool->threads()) : 1; }
+void run_blocks(ThreadPool* pool, std::size_t n, ThreadPool::Body body) {
+  if (pool)
+    pool->parallel_for(n, body);
+  else
+    body(0, n, 0);
+}
+
+// What convert() saw: how many points were undrawable, and the box of the drawable ones.
+struct Converted {
+  std::size_t skipped = 0;
+  glm::vec3 lo{std::numeric_limits<float>::infinity()};
+  glm::vec3 hi{-std::numeric_limits<float>::infinity()};
+};
+
 // Converts every point into out.positions and out.normals at its own index; an
-// undrawable one gets a NaN position. Returns how many were undrawable.
+// undrawable one gets a NaN position.
 template <int D>
-std::size_t convert(const PointSet<D>& points, PreparedPoints& out, ThreadPool* pool) {
+Converted convert(const PointSet<D>& points, PreparedPoints& out, ThreadPool* pool) {
   const std::size_t n = points.size();
   out.positions.resize(n);
   out.normals.resize(n);
-  std::vector<OwnCacheLine<std::size_t>> skipped(pool ? static_cast<std::size_t>(pool->threads()) : 1, {0});
-  auto body = [&](std::size_t begin, std::size_t end, int block) {
+  std::vector<OwnCacheLine<Converted>> blocks(blocks_of(pool));
+  run_blocks(pool, n, [&](std::size_t begin, std::size_t end, int block) {
+    Converted& seen = blocks[static_cast<std::size_t>(block)].value;  // a block may come in pieces: add to it
     for (std::size_t i = begin; i < end; ++i) {
       const glm::vec3 p = to_vec3<D>(points.positions[i]);
       const glm::vec3 normal = to_vec3<D>(points.normals[i]);
@@ -31,16 +48,35 @@ std::size_t convert(const PointSet<D>& points, PreparedPoints& out, ThreadPool* 
       const bool drawable = finite(p) && finite(normal) && length > 0.0f && std::isfinite(length);
       out.positions[i] = drawable ? p : glm::vec3(std::numeric_limits<float>::quiet_NaN());
       out.normals[i] = drawable ? normal / length : glm::vec3(0.0f);
-      if (!drawable) ++skipped[static_cast<std::size_t>(block)].value;
+      if (drawable) {
+        seen.lo = glm::min(seen.lo, p);
+        seen.hi = glm::max(seen.hi, p);
+      } else {
+        ++seen.skipped;
+      }
     }
-  };
-  if (pool)
-    pool->parallel_for(n, body);
-  else
-    body(0, n, 0);
-  std::size_t total = 0;
-  for (const auto& s : skipped) total += s.value;
-  return total;
+  });
+  Converted all;
+  for (const auto& block : blocks) {
+    all.skipped += block.value.skipped;
+    all.lo = glm::min(all.lo, block.value.lo);
+    all.hi = glm::max(all.hi, block.value.hi);
+  }
+  return all;
+}
+
+// bounding_sphere(positions), whose box convert() found already, with the radius found on the pool.
+BoundingSphere bounds_of(const FloatPoints& positions, const Converted& box, ThreadPool* pool) {
+  if (positions.empty()) return {};
+  const glm::vec3 center = 0.5f * (box.lo + box.hi);
+  std::vector<OwnCacheLine<float>> r2(blocks_of(pool), {0.0f});
+  run_blocks(pool, positions.size(), [&](std::size_t begin, std::size_t end, int block) {
+    float& r = r2[static_cast<std::size_t>(block)].value;
+    for (std::size_t i = begin; i < end; ++i) r = std::max(r, glm::dot(positions[i] - center, positions[i] - center));
+  });
+  float largest = 0.0f;
+  for (const auto& r : r2) largest = std::max(largest, r.value);
+  return {center, std::sqrt(largest)};
 }
 
 // Drops the undrawable points convert() marked, noting the input index of each kept one.
@@ -128,7 +164,8 @@ void prepare_points(const PointSet<D>& points, std::optional<double> spacing, Th
   out.normals = std::move(normals);
   out.dimension = D;
   out.input_count = points.size();
-  out.skipped = convert<D>(points, out, pool);
+  const Converted converted = convert<D>(points, out, pool);
+  out.skipped = converted.skipped;
   if (out.skipped > 0) drop_undrawable(out);
 
   if (spacing) {
@@ -141,7 +178,7 @@ void prepare_points(const PointSet<D>& points, std::optional<double> spacing, Th
     for (std::uint32_t i : out.source_index) drawable.push_back(points.positions[i]);
     out.spacing = estimate_spacing<D>(drawable);
   }
-  out.bounds = bounding_sphere(out.positions);
+  out.bounds = bounds_of(out.positions, converted, pool);
   if (!(out.spacing > 0.0)) {
     // Fewer than two distinct points: no spacing to measure; take a size that shows them.
     out.spacing = out.bounds.radius > 0.0f ? out.bounds.radius / 16.0 : 1.0;

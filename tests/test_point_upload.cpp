@@ -155,4 +155,7 @@ TEST_CASE("points prepared on a thread pool are those prepared alone, undrawable
   CHECK(pooled.spacing == alone.spacing);
   CHECK(pooled.bounds.center == alone.bounds.center);
   CHECK(pooled.bounds.radius == alone.bounds.radius);
+  const BoundingSphere around = bounding_sphere(alone.positions);  // widened by the spacing
+  CHECK(alone.bounds.center == around.center);
+  CHECK(alone.bounds.radius == around.radius + static_cast<float>(alone.spacing));
 }
