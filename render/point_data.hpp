@@ -75,8 +75,8 @@ PreparedScalars prepare_scalars(std::span<const double> values, std::size_t inpu
 // otherwise it is estimated from the points. Throws std::invalid_argument if positions
 // and normals differ in number, the set is too large for 32-bit indices, or `spacing`
 // is given but not a positive finite number. Undrawable points are skipped and counted.
-// With a pool, the conversion runs on it (the editor's worker, every step of a drag);
-// the result is the same.
+// With a pool, the conversion and the bounds run on it (the editor's worker, every
+// step of a drag); the result is the same.
 template <int D>
 PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool = nullptr);
 // The same into `out`, in the memory of its arrays where they are large enough: a
