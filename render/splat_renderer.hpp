@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
+#include "render/buffer_update.hpp"
 #include "render/camera.hpp"
 #include "render/point_data.hpp"
 #include "render/render_options.hpp"
-#include "render/stream_buffer.hpp"
 
 namespace amls {
 

@@ -11,13 +11,10 @@
 #include <cstddef>
 #include <span>
 
+#include "render/buffer_update.hpp"
 #include "render/gl_objects.hpp"
 
 namespace amls {
-
-// How point buffers are written: persistently mapped where the context can,
-// or always with glBufferSubData (the fallback, forced so that tests cover it).
-enum class BufferUpdate { best_available, sub_data };
 
 class StreamBuffer {
  public:
