@@ -11,22 +11,20 @@ namespace {
 
 // Attribute `location` reads `components` floats per point from `buffer`, advancing per
 // vertex (divisor 0) or per instance (divisor 1). The vertex array must be bound.
-void describe_attribute(GLuint location, const GlBuffer& buffer, GLint components, GLuint divisor) {
+void describe_attribute(GLuint location, const StreamBuffer& buffer, GLint components, GLuint divisor) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
   glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
   glVertexAttribDivisor(location, divisor);
 }
 
-template <typename T>
-void fill(const GlBuffer& buffer, std::span<const T> data) {
-  glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size_bytes()), data.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
 }  // namespace
 
-PointBuffers::PointBuffers() {
+PointBuffers::PointBuffers(BufferUpdate update) : positions_(update), normals_(update), scalars_(update) {
+  describe_attributes();
+  check_gl("creating the point buffers");
+}
+
+void PointBuffers::describe_attributes() {
   for (GLuint divisor : {0u, 1u}) {
     glBindVertexArray((divisor == 0 ? per_vertex_ : per_instance_).id());
     describe_attribute(kPositionAttribute, positions_, 3, divisor);
@@ -37,12 +35,12 @@ PointBuffers::PointBuffers() {
   }
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  check_gl("creating the point buffers");
 }
 
 void PointBuffers::upload(const PreparedPoints& points) {
-  fill<glm::vec3>(positions_, points.positions);
-  fill<glm::vec3>(normals_, points.normals);
+  const bool positions_moved = positions_.write(std::as_bytes(std::span(points.positions)));
+  const bool normals_moved = normals_.write(std::as_bytes(std::span(points.normals)));
+  if (positions_moved || normals_moved) describe_attributes();
   count_ = points.size();
   set_scalars_enabled(false);
   check_gl("uploading points");
@@ -52,7 +50,7 @@ void PointBuffers::upload_scalars(std::span<const float> scalars) {
   if (scalars.size() != count_)
     throw std::invalid_argument("got " + std::to_string(scalars.size()) + " scalars for " + std::to_string(count_) +
                                 " drawable points");
-  fill<float>(scalars_, scalars);
+  if (scalars_.write(std::as_bytes(scalars))) describe_attributes();
   set_scalars_enabled(true);
   check_gl("uploading point scalars");
 }

@@ -7,12 +7,91 @@
 #include <string>
 
 #include "core/geometry/point_index.hpp"
+#include "core/util/thread_pool.hpp"
 
 namespace amls {
 
 namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// body(begin, end, block) over [0, n): on the pool's threads if there is one, else at once here.
+std::size_t blocks_of(const ThreadPool* pool) { return pool ? static_cast<std::size_t>(pool->threads()) : 1; }
+void run_blocks(ThreadPool* pool, std::size_t n, ThreadPool::Body body) {
+  if (pool)
+    pool->parallel_for(n, body);
+  else
+    body(0, n, 0);
+}
+
+// What convert() saw: how many points were undrawable, and the box of the drawable ones.
+struct Converted {
+  std::size_t skipped = 0;
+  glm::vec3 lo{std::numeric_limits<float>::infinity()};
+  glm::vec3 hi{-std::numeric_limits<float>::infinity()};
+};
+
+// Converts every point into out.positions and out.normals at its own index; an
+// undrawable one gets a NaN position.
+template <int D>
+Converted convert(const PointSet<D>& points, PreparedPoints& out, ThreadPool* pool) {
+  const std::size_t n = points.size();
+  out.positions.resize(n);
+  out.normals.resize(n);
+  std::vector<OwnCacheLine<Converted>> blocks(blocks_of(pool));
+  run_blocks(pool, n, [&](std::size_t begin, std::size_t end, int block) {
+    Converted& seen = blocks[static_cast<std::size_t>(block)].value;  // a block may come in pieces: add to it
+    for (std::size_t i = begin; i < end; ++i) {
+      const glm::vec3 p = to_vec3<D>(points.positions[i]);
+      const glm::vec3 normal = to_vec3<D>(points.normals[i]);
+      const float length = glm::length(normal);
+      const bool drawable = finite(p) && finite(normal) && length > 0.0f && std::isfinite(length);
+      out.positions[i] = drawable ? p : glm::vec3(std::numeric_limits<float>::quiet_NaN());
+      out.normals[i] = drawable ? normal / length : glm::vec3(0.0f);
+      if (drawable) {
+        seen.lo = glm::min(seen.lo, p);
+        seen.hi = glm::max(seen.hi, p);
+      } else {
+        ++seen.skipped;
+      }
+    }
+  });
+  Converted all;
+  for (const auto& block : blocks) {
+    all.skipped += block.value.skipped;
+    all.lo = glm::min(all.lo, block.value.lo);
+    all.hi = glm::max(all.hi, block.value.hi);
+  }
+  return all;
+}
+
+// bounding_sphere(positions), whose box convert() found already, with the radius found on the pool.
+BoundingSphere bounds_of(const FloatPoints& positions, const Converted& box, ThreadPool* pool) {
+  if (positions.empty()) return {};
+  const glm::vec3 center = 0.5f * (box.lo + box.hi);
+  std::vector<OwnCacheLine<float>> r2(blocks_of(pool), {0.0f});
+  run_blocks(pool, positions.size(), [&](std::size_t begin, std::size_t end, int block) {
+    float& r = r2[static_cast<std::size_t>(block)].value;
+    for (std::size_t i = begin; i < end; ++i) r = std::max(r, glm::dot(positions[i] - center, positions[i] - center));
+  });
+  float largest = 0.0f;
+  for (const auto& r : r2) largest = std::max(largest, r.value);
+  return {center, std::sqrt(largest)};
+}
+
+// Drops the undrawable points convert() marked, noting the input index of each kept one.
+void drop_undrawable(PreparedPoints& out) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.positions.size(); ++i) {
+    if (std::isnan(out.positions[i].x)) continue;
+    out.positions[kept] = out.positions[i];
+    out.normals[kept] = out.normals[i];
+    out.source_index.push_back(static_cast<std::uint32_t>(i));
+    ++kept;
+  }
+  out.positions.resize(kept);
+  out.normals.resize(kept);
+}
 
 }  // namespace
 
@@ -63,7 +142,14 @@ double estimate_spacing(const std::vector<Vec<D>>& positions) {
 }
 
 template <int D>
-PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing) {
+PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool) {
+  PreparedPoints out;
+  prepare_points<D>(points, spacing, pool, out);
+  return out;
+}
+
+template <int D>
+void prepare_points(const PointSet<D>& points, std::optional<double> spacing, ThreadPool* pool, PreparedPoints& out) {
   if (points.normals.size() != points.positions.size())
     throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
                                 std::to_string(points.normals.size()) + " normals");
@@ -72,24 +158,15 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
   if (spacing && !(*spacing > 0.0 && std::isfinite(*spacing)))
     throw std::invalid_argument("point spacing must be a positive finite number, got " + std::to_string(*spacing));
 
-  PreparedPoints out;
+  FloatPoints positions = std::move(out.positions), normals = std::move(out.normals);
+  out = PreparedPoints{};  // of the old contents only the arrays' memory is kept
+  out.positions = std::move(positions);
+  out.normals = std::move(normals);
   out.dimension = D;
   out.input_count = points.size();
-  out.positions.reserve(points.size());
-  out.normals.reserve(points.size());
-  std::vector<std::uint32_t> kept;
-  kept.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const glm::vec3 p = to_vec3<D>(points.positions[i]);
-    const glm::vec3 n = to_vec3<D>(points.normals[i]);
-    const float length = glm::length(n);
-    if (!finite(p) || !finite(n) || !(length > 0.0f) || !std::isfinite(length)) continue;
-    out.positions.push_back(p);
-    out.normals.push_back(n / length);
-    kept.push_back(static_cast<std::uint32_t>(i));
-  }
-  out.skipped = points.size() - kept.size();
-  if (out.skipped > 0) out.source_index = std::move(kept);
+  const Converted converted = convert<D>(points, out, pool);
+  out.skipped = converted.skipped;
+  if (out.skipped > 0) drop_undrawable(out);
 
   if (spacing) {
     out.spacing = *spacing;
@@ -101,17 +178,37 @@ PreparedPoints prepare_points(const PointSet<D>& points, std::optional<double> s
     for (std::uint32_t i : out.source_index) drawable.push_back(points.positions[i]);
     out.spacing = estimate_spacing<D>(drawable);
   }
-  out.bounds = bounding_sphere(out.positions);
+  out.bounds = bounds_of(out.positions, converted, pool);
   if (!(out.spacing > 0.0)) {
     // Fewer than two distinct points: no spacing to measure; take a size that shows them.
     out.spacing = out.bounds.radius > 0.0f ? out.bounds.radius / 16.0 : 1.0;
   }
   if (!out.bounds.empty()) out.bounds.radius += static_cast<float>(out.spacing);
+}
+
+PreparedScalars prepare_scalars(std::span<const double> values, std::size_t input_count,
+                                std::span<const std::uint32_t> source_index) {
+  if (values.size() != input_count)
+    throw std::invalid_argument("got " + std::to_string(values.size()) + " scalars for a point set of " +
+                                std::to_string(input_count) + " points");
+  PreparedScalars out;
+  out.values.reserve(source_index.empty() ? values.size() : source_index.size());
+  auto take = [&](std::size_t i) { out.values.push_back(static_cast<float>(values[i])); };
+  if (source_index.empty())
+    for (std::size_t i = 0; i < values.size(); ++i) take(i);
+  else
+    for (std::uint32_t i : source_index) take(i);
+  glm::vec2 range{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+  for (float v : out.values)
+    if (std::isfinite(v)) range = {std::min(range.x, v), std::max(range.y, v)};
+  if (range.x <= range.y) out.range = range;
   return out;
 }
 
-template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>);
-template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>);
+template PreparedPoints prepare_points<2>(const PointSet<2>&, std::optional<double>, ThreadPool*);
+template PreparedPoints prepare_points<3>(const PointSet<3>&, std::optional<double>, ThreadPool*);
+template void prepare_points<2>(const PointSet<2>&, std::optional<double>, ThreadPool*, PreparedPoints&);
+template void prepare_points<3>(const PointSet<3>&, std::optional<double>, ThreadPool*, PreparedPoints&);
 template double estimate_spacing<2>(const std::vector<Vec<2>>&);
 template double estimate_spacing<3>(const std::vector<Vec<3>>&);
 

@@ -19,6 +19,8 @@
 namespace amls {
 
 struct SplatRenderer::Passes {
+  explicit Passes(BufferUpdate update) : points(update) {}
+
   PointBuffers points;
   SplatPass splats;
   PointPass dots;
@@ -34,54 +36,40 @@ float near_plane_of(const glm::mat4& projection) { return projection[3][2] / (pr
 
 }  // namespace
 
-SplatRenderer::SplatRenderer() {
+SplatRenderer::SplatRenderer(BufferUpdate update) {
   require_gl_context("SplatRenderer");
-  passes_ = std::make_unique<Passes>();
+  passes_ = std::make_unique<Passes>(update);
   check_gl("compiling the renderer's shaders");
 }
 
 SplatRenderer::~SplatRenderer() = default;
 
-template <int D>
-PointUpload SplatRenderer::upload(const PointSet<D>& points, std::optional<double> spacing) {
-  PreparedPoints prepared = prepare_points<D>(points, spacing);
-  passes_->points.upload(prepared);
-  dimension_ = D;
-  spacing_ = prepared.spacing;
-  input_count_ = prepared.input_count;
-  source_index_ = std::move(prepared.source_index);
+PointUpload SplatRenderer::set_points(const PreparedPoints& points) {
+  passes_->points.upload(points);
+  dimension_ = points.dimension;
+  spacing_ = points.spacing;
+  input_count_ = points.input_count;
+  source_index_ = points.source_index;
   scalar_range_.reset();
-  point_bounds_ = prepared.bounds;
-  return {prepared.size(), prepared.skipped, prepared.spacing};
+  point_bounds_ = points.bounds;
+  return {points.size(), points.skipped, points.spacing};
 }
 
 PointUpload SplatRenderer::set_points(const PointSet<3>& points, std::optional<double> spacing) {
-  return upload<3>(points, spacing);
+  return set_points(prepare_points<3>(points, spacing));
 }
 
 PointUpload SplatRenderer::set_points(const PointSet<2>& points, std::optional<double> spacing) {
-  return upload<2>(points, spacing);
+  return set_points(prepare_points<2>(points, spacing));
 }
 
 void SplatRenderer::set_scalars(std::span<const double> values) {
-  if (values.size() != input_count_)
-    throw std::invalid_argument("got " + std::to_string(values.size()) + " scalars for a point set of " +
-                                std::to_string(input_count_) + " points");
-  std::vector<float> drawable;
-  drawable.reserve(passes_->points.count());
-  auto take = [&](std::size_t i) { drawable.push_back(static_cast<float>(values[i])); };
-  if (source_index_.empty())
-    for (std::size_t i = 0; i < values.size(); ++i) take(i);
-  else
-    for (std::uint32_t i : source_index_) take(i);
-  glm::vec2 range{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
-  for (float v : drawable)
-    if (std::isfinite(v)) range = {std::min(range.x, v), std::max(range.y, v)};
-  passes_->points.upload_scalars(drawable);
-  if (range.x <= range.y)
-    scalar_range_ = range;
-  else
-    scalar_range_.reset();
+  set_scalars(prepare_scalars(values, input_count_, source_index_));
+}
+
+void SplatRenderer::set_scalars(const PreparedScalars& scalars) {
+  passes_->points.upload_scalars(scalars.values);
+  scalar_range_ = scalars.range;
 }
 
 void SplatRenderer::clear_scalars() {
@@ -112,6 +100,8 @@ void SplatRenderer::set_curve(std::span<const glm::vec2> segment_endpoints) {
 BoundingSphere SplatRenderer::bounds() const { return merge(merge(point_bounds_, curve_bounds_), handle_bounds_); }
 
 std::size_t SplatRenderer::point_count() const { return passes_->points.count(); }
+
+bool SplatRenderer::persistent_point_buffers() const { return passes_->points.persistent(); }
 
 void SplatRenderer::draw(const Camera& camera, const Viewport& viewport, const RenderOptions& options) const {
   if (viewport.width <= 0 || viewport.height <= 0)

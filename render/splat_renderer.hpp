@@ -4,6 +4,8 @@
 // OpenGL 3.3 core context is current (a GLFW window, or OffscreenContext) and knows
 // no window system. Data are uploaded once by the set_* calls; draw() does no
 // per-point work on the CPU. Every call needs the context it was made in current.
+// A program that makes new point sets often (the editor) prepares them where it
+// likes (prepare_points, no GL) and hands them over ready to upload.
 //
 //   SplatRenderer renderer;                       // after the context is current and loaded
 //   renderer.set_points(points, h);               // once per new point set
@@ -17,7 +19,9 @@
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
+#include "render/buffer_update.hpp"
 #include "render/camera.hpp"
+#include "render/point_data.hpp"
 #include "render/render_options.hpp"
 
 namespace amls {
@@ -32,7 +36,7 @@ struct PointUpload {
 class SplatRenderer {
  public:
   // Compiles the shaders. Throws std::runtime_error if no GL 3.3 context is current and loaded.
-  SplatRenderer();
+  explicit SplatRenderer(BufferUpdate update = BufferUpdate::best_available);
   ~SplatRenderer();
   SplatRenderer(const SplatRenderer&) = delete;
   SplatRenderer& operator=(const SplatRenderer&) = delete;
@@ -42,11 +46,16 @@ class SplatRenderer {
   // An empty set is allowed (nothing is drawn); see prepare_points for what throws.
   PointUpload set_points(const PointSet<3>& points, std::optional<double> spacing = std::nullopt);
   PointUpload set_points(const PointSet<2>& points, std::optional<double> spacing = std::nullopt);
+  // The same for points prepared already: only the GL upload is left, into the stores
+  // of the last point set where it fits.
+  PointUpload set_points(const PreparedPoints& points);
 
   // One value per point of the last set_points (skipped points included), e.g. sampling
   // quality; shown with ColorMode::scalar. NaN values get RenderOptions::missing_scalar_color.
   // Throws std::invalid_argument if the count differs.
   void set_scalars(std::span<const double> values);
+  // The same, prepared already (prepare_scalars) for the last set_points.
+  void set_scalars(const PreparedScalars& scalars);
   void clear_scalars();
 
   void set_handles(std::span<const Handle> handles);
@@ -64,11 +73,11 @@ class SplatRenderer {
   int dimension() const { return dimension_; }  // of the last point set (3 before any)
   double spacing() const { return spacing_; }
   std::size_t point_count() const;  // drawable points
+  // Whether the point buffers are persistently mapped (see StreamBuffer) or written with glBufferSubData.
+  bool persistent_point_buffers() const;
 
  private:
   struct Passes;
-  template <int D>
-  PointUpload upload(const PointSet<D>& points, std::optional<double> spacing);
 
   std::unique_ptr<Passes> passes_;
   int dimension_ = 3;

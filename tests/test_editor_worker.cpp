@@ -74,7 +74,9 @@ TEST_CASE("the worker applies commands in order and each snapshot says which com
   CHECK(snapshot->steps == 1);
   CHECK(snapshot->has_last);
   CHECK(snapshot->last.timings.total() > 0.0);
-  CHECK(snapshot->spacing_h.size() == snapshot->points.size());
+  REQUIRE(snapshot->spacing_h);
+  CHECK(snapshot->spacing_h->values.size() == snapshot->points->input_count);
+  CHECK(snapshot->spacing_h->drawn.values.size() == snapshot->points->size());
   CHECK(!snapshot->curve.empty());
   CHECK(snapshot->can_undo);
   CHECK(snapshot->recorded_steps == 1);
@@ -109,7 +111,7 @@ TEST_CASE("a load cancels a running step, and the new shape replaces the old") {
   const auto snapshot = worker.snapshot();
   CHECK(snapshot->cancelled == 1);
   CHECK(snapshot->dimension == 2);
-  CHECK(snapshot->points.size() == 250);
+  CHECK(snapshot->points->input_count == 250);
   CHECK(snapshot->steps == 0);
 }
 
@@ -118,7 +120,7 @@ TEST_CASE("a parameter change cancels a running step - the state is as before th
   worker.post(heavy_sphere());
   worker.post(command::AddHandle{Vec<3>(0, 0, 1)});
   REQUIRE(worker.wait_until_idle(kPatience));
-  const std::size_t loaded_points = worker.snapshot()->points.size();
+  const std::size_t loaded_points = worker.snapshot()->points->input_count;
   drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 1);
   REQUIRE(wait_for_phase(worker, "resampling", 0));
   worker.post(command::SetDeformation{MlsKind::similarity, 1.0});
@@ -127,7 +129,7 @@ TEST_CASE("a parameter change cancels a running step - the state is as before th
   CHECK(snapshot->cancelled == 1);
   CHECK(snapshot->settings.kind == MlsKind::similarity);
   CHECK(snapshot->handles[0].x() == 0.0);
-  CHECK(snapshot->points.size() == loaded_points);
+  CHECK(snapshot->points->input_count == loaded_points);
   CHECK(snapshot->steps == 0);
 }
 
@@ -169,15 +171,15 @@ TEST_CASE("a parameter change stops a step inside a phase - the state is as befo
     CHECK(after->recorded_steps == 0);
     CHECK(after->settings.kind == MlsKind::similarity);
     CHECK(after->handles == before->handles);
-    CHECK(after->points.positions == before->points.positions);
-    CHECK(after->points.normals == before->points.normals);
+    CHECK(after->points->positions == before->points->positions);
+    CHECK(after->points->normals == before->points->normals);
     // The worker goes on: the same drag now steps.
     drag(worker, {Vec<3>(0, 0, 1)}, 0, 0.3, 1);
     REQUIRE(worker.wait_until_idle(kPatience));
     const auto stepped = worker.snapshot();
     CHECK(stepped->steps == 1);
     CHECK(stepped->handles[0].x() == doctest::Approx(0.3));
-    CHECK(stepped->points.positions != before->points.positions);
+    CHECK(stepped->points->positions != before->points->positions);
   }
 }
 
@@ -237,7 +239,7 @@ TEST_CASE("export writes the current point set - a failed export leaves the prev
   const LoadedPointSet written = read_point_set(out);
   CHECK(written.dimension == 2);
   CHECK(written.has_normals);
-  CHECK(written.points.positions == worker.snapshot()->points.positions);
+  CHECK(prepare_points<3>(written.points, 1.0).positions == worker.snapshot()->points->positions);
   CHECK(has_message(worker.take_messages(), Message::Level::info, "Exported"));
 
   const auto bytes = std::filesystem::file_size(out);
@@ -369,7 +371,7 @@ TEST_CASE("a file or scene that cannot be loaded shows the reader's message and 
     REQUIRE(worker.wait_until_idle(kPatience));
     const auto after = worker.snapshot();
     CHECK(after->load_id == before->load_id);
-    CHECK(after->points.positions == before->points.positions);
+    CHECK(after->points->positions == before->points->positions);
     // The status line shows the reader's message, which names the file (once) and the key.
     CHECK(has_message(worker.take_messages(), Message::Level::error, "Cannot open " + path + bad.reason));
   }
@@ -380,17 +382,17 @@ TEST_CASE("undo and redo through the worker restore the drag's start and end") {
   worker.post(circle());
   worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
   REQUIRE(worker.wait_until_idle(kPatience));
-  const PointSet<3> start = worker.snapshot()->points;
+  const auto start = worker.snapshot()->points;
   drag(worker, {Vec<3>(1, 0, 0)}, 0, 0.4, 3);
   REQUIRE(worker.wait_until_idle(kPatience));
-  const PointSet<3> end = worker.snapshot()->points;
+  const auto end = worker.snapshot()->points;
   worker.post(command::Undo{});
   REQUIRE(worker.wait_until_idle(kPatience));
-  CHECK(worker.snapshot()->points.positions == start.positions);
+  CHECK(worker.snapshot()->points->positions == start->positions);
   CHECK(worker.snapshot()->handles[0].x() == 1.0);
   worker.post(command::Redo{});
   REQUIRE(worker.wait_until_idle(kPatience));
-  CHECK(worker.snapshot()->points.positions == end.positions);
+  CHECK(worker.snapshot()->points->positions == end->positions);
 }
 
 TEST_CASE("handle commands before anything is loaded are refused politely") {
@@ -427,21 +429,54 @@ TEST_CASE("a move's snapshot comes before its spacing is measured, which follows
   }
   const std::uint64_t move = worker.post(command::MoveHandles{{Vec<3>(0.2, 0, 1)}});
   REQUIRE(worker.wait_until_idle(kPatience));
-  std::lock_guard lock(mutex);
-  REQUIRE(published.size() == 2);
-  const Snapshot& stepped = *published[0];
-  const Snapshot& measured = *published[1];
+  std::vector<std::shared_ptr<const Snapshot>> seen;
+  {
+    std::lock_guard lock(mutex);
+    seen = published;
+  }
+  REQUIRE(seen.size() == 2);
+  const Snapshot& stepped = *seen[0];
+  const Snapshot& measured = *seen[1];
   CHECK(stepped.processed == move);
   CHECK(stepped.points_version != loaded->points_version);
   // The step's snapshot carries the spacing measured before it, marked as such.
   CHECK(stepped.spacing_version == loaded->spacing_version);
-  CHECK(stepped.spacing_h == loaded->spacing_h);
+  CHECK(stepped.spacing_h == loaded->spacing_h);  // shared
   // Then the same points, measured.
   CHECK(measured.generation > stepped.generation);
   CHECK(measured.points_version == stepped.points_version);
   CHECK(measured.spacing_version == measured.points_version);
-  CHECK(measured.points.positions == stepped.points.positions);
-  ThreadPool pool(1);
-  CHECK(measured.spacing_h == sampling_quality(measured.points, measured.settings.spacing, pool).spacing_h);
+  CHECK(measured.points == stepped.points);  // shared, not made again
   CHECK(worker.snapshot()->generation == measured.generation);
+  // Measured on those points: the ones an export writes now (resampling is off, so it maps nothing first).
+  amls::test::TempDir dir;
+  worker.post(command::Export{dir.file("points.ply")});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const LoadedPointSet written = read_point_set(dir.file("points.ply"));
+  REQUIRE(prepare_points<3>(written.points, 1.0).positions == measured.points->positions);
+  ThreadPool pool(1);
+  REQUIRE(measured.spacing_h);
+  CHECK(measured.spacing_h->values == sampling_quality(written.points, measured.settings.spacing, pool).spacing_h);
+  const PreparedScalars drawn = prepare_scalars(measured.spacing_h->values, measured.points->input_count, {});
+  CHECK(measured.spacing_h->drawn.values == drawn.values);
+  CHECK(measured.spacing_h->drawn.range == drawn.range);
+}
+
+TEST_CASE("a snapshot's points are ready to draw, made once per point set and shared by its snapshots") {
+  EditorWorker worker;
+  worker.post(circle());
+  REQUIRE(worker.wait_until_idle(kPatience));
+  const auto loaded = worker.snapshot();
+  const PreparedPoints& points = *loaded->points;
+  CHECK(points.dimension == 2);
+  CHECK(points.input_count == 250);
+  CHECK(points.size() == 250);
+  CHECK(points.skipped == 0);
+  CHECK(points.spacing == loaded->settings.spacing);
+  CHECK(!points.bounds.empty());
+  for (const glm::vec3& p : points.positions) CHECK(p.z == 0.0f);
+  worker.post(command::AddHandle{Vec<3>(1, 0, 0)});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(worker.snapshot()->generation > loaded->generation);
+  CHECK(worker.snapshot()->points == loaded->points);
 }

@@ -162,23 +162,19 @@ void EditorApp::take_snapshot() {
   const bool new_points = new_load || next->points_version != shown_->points_version;
   if (next->dimension > 0) {
     if (new_points) {
-      const std::optional<double> spacing = next->settings.spacing;
       try {
-        if (next->dimension == 2)
-          renderer_->set_points(to_2d(next->points), spacing);
-        else
-          renderer_->set_points(next->points, spacing);
+        renderer_->set_points(*next->points);
       } catch (const std::exception& e) {
         ui_.tell({Message::Level::error, std::string("Cannot show the points: ") + e.what()});
       }
       // In 3D a click anywhere on a splat picks its point (splats are RenderOptions::splat_scale h wide).
-      view_.set_points(std::shared_ptr<const PointSet<3>>(next, &next->points), next->dimension == 3
+      view_.set_points(next->points, next->dimension == 3
                                          ? ui_.render.splat_scale * static_cast<float>(next->settings.spacing)
                                          : 0.0f);
     }
     if (new_points || next->spacing_version != shown_->spacing_version) {
-      if (next->spacing_h.size() == next->points.size())
-        renderer_->set_scalars(next->spacing_h);
+      if (next->spacing_h)
+        renderer_->set_scalars(next->spacing_h->drawn);
       else
         renderer_->clear_scalars();
     }
@@ -209,7 +205,7 @@ void EditorApp::take_snapshot() {
   log_.line([&] {
     return "snapshot gen=" + std::to_string(next->generation) + " processed=" + std::to_string(next->processed) +
            " load=" + std::to_string(next->load_id) + " dimension=" + std::to_string(next->dimension) +
-           " points=" + std::to_string(next->points.size()) + " steps=" + std::to_string(next->steps) +
+           " points=" + std::to_string(next->points->input_count) + " steps=" + std::to_string(next->steps) +
            " variant=" + to_string(next->settings.variant) + " resamples=" + std::to_string(next->resamples);
   });
   shown_ = std::move(next);

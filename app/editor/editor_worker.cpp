@@ -22,18 +22,22 @@ Vec<3> to_3d_vector(const Vec<D>& v) {
   return out;
 }
 
-template <int D>
-PointSet<3> points_3d(const PointSet<D>& points) {
-  if constexpr (D == 3) {
-    return points;
-  } else {
-    return to_3d(points);
-  }
-}
-
 std::string describe_count(std::size_t n, const char* what) { return std::to_string(n) + " " + what; }
 
 }  // namespace
+
+template <int D>
+std::shared_ptr<const PreparedPoints> EditorWorker::drawable_points(EditSession<D>& s) {
+  try {
+    return recycler_.prepare<D>(s.points(), s.settings().spacing, s.pool());
+  } catch (const std::exception& e) {
+    message(Message::Level::error, std::string("Cannot show the points: ") + e.what());
+    PreparedPoints none;
+    none.dimension = D;
+    none.spacing = s.settings().spacing;
+    return std::make_shared<const PreparedPoints>(std::move(none));
+  }
+}
 
 EditorWorker::EditorWorker(WorkerOptions options)
     : options_(options), snapshot_(std::make_shared<const Snapshot>()), thread_([this] { run(); }) {}
@@ -147,7 +151,10 @@ void EditorWorker::refresh_spacing() {
       SamplingQuality quality = sampling_quality(s.points(), s.settings().spacing, s.pool());
       auto snapshot = std::make_shared<Snapshot>(*derived_);
       snapshot->generation = ++generation_;
-      snapshot->spacing_h = std::move(quality.spacing_h);
+      auto measured = std::make_shared<SpacingPerPoint>();
+      measured->values = std::move(quality.spacing_h);
+      measured->drawn = prepare_scalars(measured->values, snapshot->points->input_count, snapshot->points->source_index);
+      snapshot->spacing_h = std::move(measured);
       snapshot->spacing = quality.stats;
       snapshot->spacing_version = snapshot->points_version;
       derived_ = snapshot;
@@ -356,10 +363,12 @@ void EditorWorker::publish(std::uint64_t processed) {
                             snapshot->spacing_version = derived_->spacing_version;
                             snapshot->curve = derived_->curve;
                           } else {
-                            snapshot->points = points_3d(s.points());
-                            // The spacing is measured by refresh_spacing(); until then the last one stands in.
-                            if (derived_ && derived_load_ == load_id_ &&
-                                derived_->spacing_h.size() == s.points().size()) {
+                            snapshot->points = drawable_points(s);
+                            // The spacing is measured by refresh_spacing(); until then the last one stands in
+                            // (its colours, when they are in the order of the new drawable points).
+                            if (derived_ && derived_load_ == load_id_ && derived_->spacing_h &&
+                                derived_->spacing_h->values.size() == s.points().size() &&
+                                derived_->points->source_index == snapshot->points->source_index) {
                               snapshot->spacing_h = derived_->spacing_h;
                               snapshot->spacing = derived_->spacing;
                               snapshot->spacing_version = derived_->spacing_version;

@@ -17,6 +17,7 @@
 
 #include "app/editor/command_queue.hpp"
 #include "app/editor/edit_session.hpp"
+#include "app/editor/point_recycler.hpp"
 #include "app/editor/snapshot.hpp"
 
 namespace amls::editor {
@@ -73,6 +74,9 @@ class EditorWorker {
   void start(const InitialShape& shape);
   void note_result(const EditResult& result);
   void publish(std::uint64_t processed);
+  // The session's points made ready to draw; none (and a message) if they cannot be drawn.
+  template <int D>
+  std::shared_ptr<const PreparedPoints> drawable_points(EditSession<D>& s);
   // Once the queue is empty: under `local`, resamples newly loaded points
   // whole (what the first step would do first) or ends a drag (the points
   // mapped exactly); then measures the spacing. Each stops as soon as a
@@ -108,6 +112,7 @@ class EditorWorker {
   std::uint64_t curve_version_ = ~std::uint64_t{0};
   Clock::time_point last_trace_{};
   std::shared_ptr<const Snapshot> derived_;
+  PointRecycler recycler_;
 
   // Shared with the UI thread.
   mutable std::mutex mutex_;

@@ -53,7 +53,7 @@ void builtin_shape(int dimension, const char* button, double radius, int& points
 void shape_section(UiState& ui, const Snapshot& snapshot, const PanelActions& actions) {
   if (snapshot.dimension > 0) {
     ImGui::TextWrapped("%s", snapshot.name.c_str());
-    ImGui::TextColored(kDim, "%dD, %zu points, %zu handles", snapshot.dimension, snapshot.points.size(),
+    ImGui::TextColored(kDim, "%dD, %zu points, %zu handles", snapshot.dimension, snapshot.points->input_count,
                        snapshot.handles.size());
   } else {
     ImGui::TextColored(kDim, "Nothing loaded");
@@ -249,7 +249,7 @@ void table1_section(const Snapshot& snapshot) {
     ImGui::EndTable();
   }
   ImGui::Text("%zu steps, %zu resamples, %.0f steps/s, %zu points", snapshot.steps, snapshot.resamples,
-              snapshot.steps_per_second, snapshot.points.size());
+              snapshot.steps_per_second, snapshot.points->input_count);
   if (snapshot.spacing_version == Snapshot::kNotMeasured)
     ImGui::TextColored(kDim, "spacing / h: measured once the drag pauses");
   else
@@ -326,7 +326,7 @@ void draw_status_bar(const UiState& ui, const Snapshot& snapshot, const WorkerSt
   if (view.dragging() && view.lock() != AxisLock::none)
     right += std::string("lock ") + "-XYZ"[static_cast<int>(view.lock())] + "  |  ";
   if (snapshot.dimension > 0)
-    right += std::to_string(snapshot.dimension) + "D  " + std::to_string(snapshot.points.size()) + " points  h " +
+    right += std::to_string(snapshot.dimension) + "D  " + std::to_string(snapshot.points->input_count) + " points  h " +
              format("%.4g", snapshot.settings.spacing) + "  " + to_string(snapshot.settings.variant) +
              (!snapshot.settings.resample ? "  (no resampling)"
               : snapshot.settings.policy.kind == ResamplePolicy::Kind::always

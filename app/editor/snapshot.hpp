@@ -1,7 +1,9 @@
 #pragma once
 // What the editor's worker hands to the UI: immutable snapshots of the
-// session, its progress while it works, and messages for the status line. No GL.
+// session, its progress while it works, and messages for the status line. No GL
+// (render/point_data.hpp is the renderer's CPU side).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,8 +11,16 @@
 #include "core/surface/curve_tracing.hpp"
 #include "core/run/deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
+#include "render/point_data.hpp"
 
 namespace amls::editor {
+
+// Each point's nearest-neighbour distance / h, in the points' order and ready
+// to draw with them (the colours of `Snapshot::points`).
+struct SpacingPerPoint {
+  std::vector<double> values;
+  PreparedScalars drawn;
+};
 
 struct Snapshot {
   std::uint64_t generation = 0;      // increases with every snapshot
@@ -20,13 +30,17 @@ struct Snapshot {
   int dimension = 0;                 // 0: nothing loaded yet
   std::string name;
 
-  PointSet<3> points;               // 2D: z = 0
+  // The points ready to draw (float positions and unit normals, 2D: z = 0, the
+  // bounds, the undrawable ones left out): made once per point set on the
+  // worker's pool and shared by the snapshots of that set, so that the UI
+  // thread only uploads them and picks on them. Never null.
+  std::shared_ptr<const PreparedPoints> points = std::make_shared<const PreparedPoints>();
   // Each point's nearest-neighbour distance / h and their statistics, measured
   // on the points of `spacing_version`: while a drag runs, the spacing is
   // measured only when the worker waits for commands (it costs more than a
   // local step on a million points), and a snapshot carries the last
-  // measurement while the point count stays (empty when it changed).
-  std::vector<double> spacing_h;
+  // measurement, shared, while the point count stays (null when it changed).
+  std::shared_ptr<const SpacingPerPoint> spacing_h;
   SpacingStats spacing;
   static constexpr std::uint64_t kNotMeasured = ~std::uint64_t{0};
   std::uint64_t spacing_version = kNotMeasured;

@@ -39,10 +39,9 @@ void ViewController::fit(const BoundingSphere& bounds, const Viewport& viewport)
   camera_.fit(BoundingSphere{bounds.center, 1.12f * bounds.radius}, viewport.aspect());
 }
 
-void ViewController::set_points(std::shared_ptr<const PointSet<3>> points, float splat_radius) {
+void ViewController::set_points(std::shared_ptr<const PreparedPoints> points, float splat_radius) {
   points_ = std::move(points);
   splat_radius_ = splat_radius;
-  pickable_ = false;
 }
 
 void ViewController::sync_handles(const std::vector<Vec<3>>& handles) {
@@ -60,16 +59,7 @@ std::vector<glm::vec3> ViewController::handle_positions() const {
 
 std::optional<std::size_t> ViewController::pick_surface(glm::vec2 pixel, const Viewport& viewport) const {
   if (!points_) return std::nullopt;
-  if (!pickable_) {
-    positions_.resize(points_->size());
-    normals_.resize(points_->size());
-    for (std::size_t i = 0; i < points_->size(); ++i) {
-      positions_[i] = to_glm(points_->positions[i]);
-      normals_[i] = to_glm(points_->normals[i]);
-    }
-    pickable_ = true;
-  }
-  return pick_point(positions_, normals_, camera_, viewport, pixel, pick_radius_px_, splat_radius_);
+  return pick_point(points_->positions, points_->normals, camera_, viewport, pixel, pick_radius_px_, splat_radius_);
 }
 
 void ViewController::on_event(const InputEvent& event, const Viewport& viewport, glm::vec2 pixels_per_unit) {
@@ -97,7 +87,7 @@ void ViewController::press(const InputEvent& event, glm::vec2 pixel, const Viewp
   if (drag_ || camera_drag_) return;  // one interaction at a time
   if (event.code == GLFW_MOUSE_BUTTON_LEFT && (event.mods & GLFW_MOD_SHIFT)) {
     if (const std::optional<std::size_t> hit = pick_surface(pixel, viewport)) {
-      const Vec<3> position = points_->positions[*hit];
+      const Vec<3> position = to_vec(points_->positions[*hit]);
       handles_.push_back(position);
       selected_ = handles_.size() - 1;
       post_(command::AddHandle{position});
@@ -181,7 +171,7 @@ void ViewController::update(const Viewport& viewport, bool shift_down, bool curs
   if (!drag_ && in_view) {
     hovered_ = pick_handle(handle_positions(), camera_, viewport, cursor_, 1.5f * pick_radius_px_);
     if (shift_down && !hovered_)
-      if (const std::optional<std::size_t> hit = pick_surface(cursor_, viewport)) preview_ = positions_[*hit];
+      if (const std::optional<std::size_t> hit = pick_surface(cursor_, viewport)) preview_ = points_->positions[*hit];
   }
   if (move_pending_ && drag_) post_(command::MoveHandles{handles_});
   move_pending_ = false;

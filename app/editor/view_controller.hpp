@@ -17,6 +17,7 @@
 #include "app/editor/command.hpp"
 #include "app/editor/editor_window.hpp"
 #include "app/editor/picking.hpp"
+#include "render/point_data.hpp"
 #include "render/render_options.hpp"
 
 namespace amls::editor {
@@ -30,10 +31,10 @@ class ViewController {
   void start(int dimension, const BoundingSphere& bounds, const Viewport& viewport);
   void fit(const BoundingSphere& bounds, const Viewport& viewport);
 
-  // The surface's points for picking (positions in double for new handles),
-  // shared with the snapshot that holds them; `splat_radius` (world units, 0
-  // for none) lets a click anywhere on a splat pick it.
-  void set_points(std::shared_ptr<const PointSet<3>> points, float splat_radius);
+  // The surface's points for picking, as drawn (a new handle goes where its
+  // point is drawn), shared with the snapshot that holds them; `splat_radius`
+  // (world units, 0 for none) lets a click anywhere on a splat pick it.
+  void set_points(std::shared_ptr<const PreparedPoints> points, float splat_radius);
   // The worker's handles; taken unless a drag is running (the caller knows the
   // worker has applied every command sent).
   void sync_handles(const std::vector<Vec<3>>& handles);
@@ -87,11 +88,7 @@ class ViewController {
   std::function<void(Command)> post_;
   Camera camera_ = Camera::planar();
   int dimension_ = 2;
-  std::shared_ptr<const PointSet<3>> points_;
-  // Float copies for picking, made at the first pick after set_points: a drag
-  // brings new points every step, a million at a time, and picks none of them.
-  mutable std::vector<glm::vec3> positions_, normals_;
-  mutable bool pickable_ = false;
+  std::shared_ptr<const PreparedPoints> points_;
   std::vector<Vec<3>> handles_;
   std::optional<std::size_t> selected_, hovered_;
   std::optional<glm::vec3> preview_;  // Shift: where a click would add a handle
