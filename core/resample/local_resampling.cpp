@@ -57,7 +57,7 @@ double closest_pair(const std::vector<Vec<D>>& positions, const Vec<D>& origin, 
 // they fill the seam. A new point is dropped where a kept point claims its
 // vertex (its nearest: HAVECLOSEPOINT between old and new) or lies closer
 // than the resampler lets its own points come (`crowding`). Without the strip,
-// the kept points near R, stretched up to the strain limit, can lie more than
+// the kept points near R, stretched up to the limit (grow_above of it where R grew), can lie more than
 // a spacing away from R's new points.
 template <int D>
 void splice(PointSet<D>& points, std::vector<float>& strain, const std::vector<std::uint8_t>& ring,

@@ -35,7 +35,8 @@
 // crossing whose nearer end it does not claim). The new points of the strip
 // just outside R (the walked ring) are kept by the same rule
 // (LocalResampleOptions::fill_seam): the kept points next to R are stretched
-// by up to the strain limit, and without them the seam kept a gap wider than
+// by up to the strain limit (up to grow_above of it where the flagged cells
+// grew), and without them the seam kept a gap wider than
 // a whole resample leaves.
 //
 // Inside R, F and the crossings are those of a whole-surface resample of the
