@@ -82,6 +82,10 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
                                      options.resampling.threads)
                      .summary()
               << ", wrote " << options.mesh << "\n";
+  const RimReport& rim = result.rim;
+  if (rim.samples_in + rim.samples_out > 0)
+    std::cout << "rim: " << rim.samples_in << " rim samples in, " << rim.samples_out
+              << " out; the output reaches " << rim.advance_h << " h past the input's rim\n";
   const Coverage& c = result.coverage;
   std::cout << "coverage: " << c.summary() << "\n";
   std::cout << "time " << seconds << " s, peak memory " << memory << " MiB\n";
@@ -110,6 +114,7 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
                      {"output_in_gaps", c.gap_fraction()},
                      {"output_gap_points", c.output_in_gaps},
                      {"clear_loss", c.clear_loss()}};
+    j["rim"] = {{"samples_in", rim.samples_in}, {"samples_out", rim.samples_out}, {"advance_h", rim.advance_h}};
     j["seconds"] = seconds;
     j["peak_memory_mib"] = memory;
     write_json_file(options.json_path, j);

@@ -208,6 +208,28 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
 }
 
 template <int D>
+void Resampler<D>::drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid, ThreadPool& pool) {
+  const double h = grid.spacing();
+  std::vector<std::uint8_t> inside(crossings_.size());
+  pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t c = begin; c < end; ++c) {
+      const Crossing& x = crossings_[c];
+      Vec<D> q = grid.vertex_position(field_.vertex_of(x.from));
+      q[x.axis] += x.t * h;
+      inside[c] = !rim.rim.near(q) ||
+                  inside_rim(rim, h, q, Vec<D>(values_[x.from].gradient + values_[x.to].gradient));
+    }
+  });
+  std::size_t kept = 0;
+  for (std::size_t c = 0; c < crossings_.size(); ++c) {
+    crossings_[kept] = crossings_[c];
+    kept += inside[c];
+  }
+  stats_.beyond_rim = crossings_.size() - kept;
+  crossings_.resize(kept);
+}
+
+template <int D>
 void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool) {
   const Grid<D>& grid = surface.grid();
   const double h = grid.spacing();
@@ -350,6 +372,8 @@ PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant varian
   const Grid<D>& grid = surface.grid();
   const double h = grid.spacing();
   list_crossings(variant, h, pool);
+  CarriedRim<D> rim = carry_rim(surface, pool);
+  if (!rim.rim.empty()) drop_beyond_rim(rim, grid, pool);
   // Only crossings that may win HAVECLOSEPOINT are located: a third fewer
   // root findings in 2D. The interpolated variant's estimates are its points.
   drop_certain_losers(variant == Variant::exact ? kEstimateUncertainty : 0.0);
@@ -363,6 +387,11 @@ PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant varian
     q[x.axis] += x.t * h;
     out.add(q, x.normal);
   }
+  append_rim(rim, h, out);
+  stats_.rim_samples = surface.rim().size();
+  stats_.beyond_rim += rim.stats.crowding;
+  stats_.rim_carried = rim.stats.carried;
+  stats_.rim_inserted = rim.stats.inserted;
   stats_.inserted = out.size();
   return out;
 }

@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "core/resample/rim_carrying.hpp"
 #include "core/surface/amls_surface.hpp"
 #include "core/util/id_lists.hpp"
 #include "core/geometry/vertex_field.hpp"
@@ -64,6 +65,10 @@ struct ResampleStats {
   std::size_t inserted = 0;            // new points
   std::size_t root_fallbacks = 0;      // exact roots that met an undefined F and took the interpolant's zero
   std::size_t root_evaluations = 0;    // evaluations of F by the root finder
+  std::size_t rim_samples = 0;         // samples of the old points found on a rim (core/surface/surface_rim.hpp)
+  std::size_t beyond_rim = 0;          // crossings dropped at an open surface's rim: outside the domain, or crowding a rim point
+  std::size_t rim_carried = 0;         // rim samples carried into the new points
+  std::size_t rim_inserted = 0;        // points inserted along stretched rims
 };
 
 template <int D>
@@ -116,6 +121,10 @@ class Resampler {
 
   // Lists the edges with a sign change, each with its crossing's estimated position.
   void list_crossings(Variant variant, double h, ThreadPool& pool);
+  // Cuts crossings_ to those inside the domain that an open surface's
+  // carried rim draws (core/resample/rim_carrying.hpp), judged at their
+  // estimated positions.
+  void drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid, ThreadPool& pool);
   // Cuts crossings_ to those that may win HAVECLOSEPOINT if every estimated
   // position is within `uncertainty` (a fraction of h) of the crossing.
   void drop_certain_losers(double uncertainty);

@@ -125,6 +125,38 @@ Grid<D> resampling_grid(const PointSet<D>& points, double h, double radius_facto
   return grid;
 }
 
+namespace {
+
+template <int D>
+AmlsSurface<D> fitted_surface(const PointSet<D>& points, const Grid<D>& grid, const AmlsParameters& parameters,
+                              ThreadPool& pool) {
+  AmlsSurface<D> surface(grid, parameters);
+  surface.set_points(points);
+  surface.hash_points(pool);
+  surface.update_normals(pool);
+  return surface;
+}
+
+// The rims of the input and of the output, each found on its own surface,
+// and how far the output reaches past the input's rim line.
+template <int D>
+RimReport rim_report(const PointSet<D>& input, const PointSet<D>& output, const Grid<D>& grid,
+                     const AmlsParameters& parameters, int threads) {
+  RimReport report;
+  if (!parameters.keep_rims || output.empty()) return report;
+  ThreadPool pool(threads);
+  const AmlsSurface<D> before = fitted_surface(input, grid, parameters, pool);
+  report.samples_in = before.rim().size();
+  report.samples_out = fitted_surface(output, grid, parameters, pool).rim().size();
+  double farthest = 0.0;
+  for (std::size_t k = 0; k < output.size(); ++k)
+    farthest = std::max(farthest, before.rim().side(output.positions[k], output.normals[k]).value_or(0.0));
+  report.advance_h = farthest / grid.spacing();
+  return report;
+}
+
+}  // namespace
+
 template <int D>
 ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResampling& options) {
   if (points.empty()) throw std::invalid_argument("no points to resample: the input is empty");
@@ -140,7 +172,8 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
   const Grid<D> grid = resampling_grid(points, h, options.radius_factor);
   if (points.size() > static_cast<std::size_t>(kSpacingNeighbours))
     check_resampling_cost(D, sampled_extent(points.positions), h, options);
-  const std::vector<Vec<D>> input = points.positions;
+  const PointSet<D> input_points = points;
+  const std::vector<Vec<D>>& input = input_points.positions;
   AmlsParameters parameters{options.radius_factor};
   parameters.widen_support = options.widen_support;
   DeformingSurface<D> surface(grid, parameters, options.variant, options.threads);
@@ -155,7 +188,8 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
     }
   }
   const StepStats stats = surface.resample_only();
-  ResampledPointSet<D> out{surface.points(), grid, stats, widening, spacing_stats(surface.points(), h), Coverage{}};
+  ResampledPointSet<D> out{surface.points(), grid, stats, widening, spacing_stats(surface.points(), h), Coverage{}, RimReport{}};
+  out.rim = rim_report(input_points, out.points, grid, parameters, options.threads);
   if (input.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
     out.coverage = measure_coverage<D>(input, out.points.positions, h);
     ThreadPool pool(options.threads);

@@ -70,6 +70,15 @@ struct SupportWidening {
   double widest = 1.0;             // the largest Delta_i / Delta
 };
 
+// An open surface's rim through the resample (core/surface/surface_rim.hpp).
+struct RimReport {
+  std::size_t samples_in = 0;   // rim samples of the input
+  std::size_t samples_out = 0;  // rim samples of the output, found as the input's were
+  // How far, in h, the output reaches past the rim line of the input's rim
+  // samples (the largest G of an output point, 0 where none lies beyond).
+  double advance_h = 0.0;
+};
+
 template <int D>
 struct ResampledPointSet {
   PointSet<D> points;
@@ -78,6 +87,7 @@ struct ResampledPointSet {
   SupportWidening widening;
   SpacingStats spacing_h;  // nearest-neighbour spacing of the new points, in units of h
   Coverage coverage;       // of the input by the new points (core/geometry/coverage.hpp)
+  RimReport rim;
 };
 
 // The grid a resampling at h uses: origin 0 when the points lie in the unit

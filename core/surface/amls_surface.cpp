@@ -27,6 +27,7 @@ void AmlsSurface<D>::set_points(PointSet<D> points) {
                                 std::to_string(points.normals.size()) + " normals");
   points_ = std::move(points);
   given_radii_.reset();
+  rim_ = SurfaceRim<D>();
   hashed_ = ready_ = false;
 }
 
@@ -49,6 +50,7 @@ template <int D>
 void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   // Not hashed until the index is whole (the build can throw, or be cancelled).
   hashed_ = ready_ = false;
+  rim_ = SurfaceRim<D>();  // its ids are the old order's
   support_radii_.clear();
   inverse_r2_.clear();
   wide_ids_.clear();
@@ -141,6 +143,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     fit_normals(UniformSupport{1.0 / radius_}, status, pool);
   NormalStats stats;
   for (FitStatus s : status) stats.count(s);
+  find_rim(pool);
   offsets_.clear();
   if constexpr (D == 3) {
     if (list_neighbours)
@@ -157,6 +160,8 @@ template <typename Support>
 void AmlsSurface<D>::fit_normals(const Support& support, std::vector<FitStatus>& status, ThreadPool& pool) {
   const bool filter = parameters_.orientation_filter;
   const bool list_neighbours = D == 3 && parameters_.bias_correction;
+  const bool flag_rims = parameters_.keep_rims;
+  rim_candidates_.assign(flag_rims ? points_.size() : 0, 0);
   pool.parallel_for(points_.size(), [&](std::size_t begin, std::size_t end, int block) {
     // Points are in cell order, so consecutive points share their candidate
     // neighbours: every point of the 3^D cells around their cell.
@@ -197,9 +202,60 @@ void AmlsSurface<D>::fit_normals(const Support& support, std::vector<FitStatus>&
         fit.add(u, weight_of_squared_ratio(s2));
       }
       if (listed) neighbours_.finish(i, block);
+      if (flag_rims) {
+        const Vec<D> shift = fit.weighted_centroid();
+        const Vec<D> tangential = shift - own * shift.dot(own);
+        rim_candidates_[i] = tangential.squaredNorm() > kRimCandidateShift * kRimCandidateShift;
+      }
     }
     fits.finish(end);
   });
+}
+
+template <int D>
+void AmlsSurface<D>::find_rim(ThreadPool& pool) {
+  rim_ = SurfaceRim<D>();
+  std::vector<std::uint32_t> candidates;
+  for (std::uint32_t i = 0; i < rim_candidates_.size(); ++i)
+    if (rim_candidates_[i]) candidates.push_back(i);
+  if (candidates.empty()) return;
+  // Each candidate's neighbours within kRimReach supports (or whose own
+  // support reaches that far), seen in its tangent plane. Their normals
+  // must not face away (within 120 degrees of its own): the other side of a
+  // thin sheet is no neighbour, but the other face of a sharp edge is.
+  std::vector<std::optional<Vec<D>>> outward(candidates.size());
+  pool.parallel_for(candidates.size(), [&](std::size_t begin, std::size_t end, int) {
+    std::vector<std::uint32_t> ids;
+    std::vector<RimNeighbour<D>> neighbours;
+    for (std::size_t c = begin; c < end; ++c) {
+      const std::uint32_t i = candidates[c];
+      const Vec<D>& p = points_.positions[i];
+      const Vec<D>& n = pseudo_normals_[i];
+      const double own = support_radius(i);
+      ids.clear();
+      neighbours.clear();
+      index_.gather(p, p, kRimReach * own, ids);
+      if (widened()) gather_widened(p, p, kRimReach * own, ids);
+      for (const std::uint32_t j : ids) {
+        const Vec<D> offset = points_.positions[j] - p;
+        const double reach = kRimReach * std::max(own, support_radius(j));
+        if (j == i || offset.squaredNorm() > reach * reach || pseudo_normals_[j].dot(n) < kRimFacing) continue;
+        neighbours.push_back({offset, 0.5 * kRimBridge * (own + support_radius(j))});
+      }
+      outward[c] = rim_outward<D>(n, neighbours);
+    }
+  });
+  typename SurfaceRim<D>::Samples samples;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (!outward[c]) continue;
+    const std::uint32_t i = candidates[c];
+    samples.ids.push_back(i);
+    samples.positions.push_back(points_.positions[i]);
+    samples.outward.push_back(*outward[c]);
+    samples.normals.push_back(pseudo_normals_[i]);
+    samples.radii.push_back(support_radius(i));
+  }
+  rim_ = SurfaceRim<D>(std::move(samples), grid_.origin());
 }
 
 template <int D>

@@ -14,6 +14,7 @@
 #include "core/geometry/point_index.hpp"
 #include "core/geometry/point_set.hpp"
 #include "core/surface/pratt_fit.hpp"
+#include "core/surface/surface_rim.hpp"
 #include "core/util/thread_pool.hpp"
 
 namespace amls {
@@ -45,6 +46,11 @@ struct AmlsParameters {
   // of an unevenly sampled input stay closed. Off for the paper's tests; where
   // every Delta_i equals Delta the surface is the same as without it.
   bool widen_support = false;
+  // Open surfaces keep their rims (core/surface/surface_rim.hpp): samples
+  // on a rim are found at Update_Normals, and the resampler places no point
+  // beyond the rim line they draw and carries them into its output. A closed
+  // surface has no rim sample, and nothing changes.
+  bool keep_rims = true;
 };
 
 // Positions and pseudo-normals of the points near a region, copied side by side
@@ -113,6 +119,11 @@ class AmlsSurface {
   // to agree with the normal it carries; where the fit fails, the carried normal.
   NormalStats update_normals(ThreadPool& pool);
   const std::vector<Vec<D>>& pseudo_normals() const { return pseudo_normals_; }
+  // The rim samples found by the last update_normals() (none when
+  // AmlsParameters::keep_rims is off or the surface is closed).
+  const SurfaceRim<D>& rim() const { return rim_; }
+  // The support Delta_i of point i (Delta where no support is widened).
+  double support_radius(std::uint32_t i) const { return widened() ? support_radii_[i] : radius_; }
   // The bias correction's offset of every point, empty when it is off.
   const std::vector<double>& offsets() const { return offsets_; }
 
@@ -164,6 +175,8 @@ class AmlsSurface {
   struct WidenedSupport;
   template <typename Support>
   void fit_normals(const Support& support, std::vector<FitStatus>& status, ThreadPool& pool);
+  // The rim samples among the points flagged by the fits (rim_candidates_).
+  void find_rim(ThreadPool& pool);
   // gather_ids()' second part when widened(): the widened points beyond `radius` whose own support reaches.
   void gather_widened(const Vec<D>& lo, const Vec<D>& hi, double radius, std::vector<std::uint32_t>& out) const;
   template <bool kWidened>
@@ -196,6 +209,10 @@ class AmlsSurface {
   std::vector<Vec<D>> pseudo_normals_;
   std::vector<double> offsets_;
   IdLists neighbours_;  // every point's neighbours within Delta, for the bias correction
+  // Per point, whether its fit's neighbour centroid lies off it along the
+  // tangent plane (kRimCandidateShift): the rim test's candidates.
+  std::vector<std::uint8_t> rim_candidates_;
+  SurfaceRim<D> rim_;
   bool hashed_ = false;
   bool ready_ = false;
 };

@@ -65,6 +65,15 @@ class PrattFit {
   static void solve_lanes(std::span<PrattFit> fits, std::span<const Vec<D>> carried, std::span<Vec<D>> normals,
                           std::span<FitStatus> status);
 
+  // The neighbours' weighted centroid, in the fit's coordinates (relative to
+  // the point, in units of its support); zero when no weight was added.
+  Vec<D> weighted_centroid() const {
+    if (lower_[0] <= 0.0) return Vec<D>::Zero();
+    Vec<D> sum;
+    for (int a = 0; a < D; ++a) sum[a] = lower_[1 + a];  // column 0 of A below its first entry: sum w u
+    return sum / lower_[0];
+  }
+
   // The fitted coefficients (a0, b, a2) of the last solve that found the
   // eigenvector, scaled so that alpha^T C alpha = 1.
   Coeffs coefficients() const;
