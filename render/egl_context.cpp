@@ -45,6 +45,13 @@ int initialise(EGLDisplay display) {
   return major * 10 + minor;
 }
 
+// The extensions EGL has without a display (EGL_EXT_client_extensions), or "" without any.
+std::string egl_client_extensions() {
+  // Without EGL_EXT_client_extensions this is an error (EGL_BAD_DISPLAY) and nullptr.
+  const char* extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  return extensions ? extensions : "";
+}
+
 GLADapiproc egl_gl_function(const char* name) { return reinterpret_cast<GLADapiproc>(eglGetProcAddress(name)); }
 
 class EglContext final : public HeadlessGl {
@@ -166,16 +173,17 @@ std::string egl_error_text() {
   return std::string(egl_error_name(code)) + " (" + hex + ")";
 }
 
-std::string egl_client_extensions() {
-  // Without EGL_EXT_client_extensions this is an error (EGL_BAD_DISPLAY) and nullptr.
-  const char* extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  return extensions ? extensions : "";
+void require_egl_client_extensions(std::initializer_list<const char*> names) {
+  const std::string client = egl_client_extensions();
+  if (client.empty())
+    throw std::runtime_error("libEGL lists no client extensions: it found no EGL driver (Mesa's is libegl-mesa0; "
+                             "glvnd reads the drivers from /usr/share/glvnd/egl_vendor.d)");
+  for (const char* name : names)
+    if (!has_extension(client, name)) throw std::runtime_error(std::string("libEGL lacks ") + name);
 }
 
 EGLDisplay egl_platform_display(EGLenum platform, void* native_display, const char* platform_extension) {
-  const std::string client = egl_client_extensions();
-  for (const char* needed : {"EGL_EXT_platform_base", platform_extension})
-    if (!has_extension(client, needed)) throw std::runtime_error(std::string("libEGL lacks ") + needed);
+  require_egl_client_extensions({"EGL_EXT_platform_base", platform_extension});
   const auto get_display = egl_function<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
   const EGLDisplay display = get_display(platform, native_display, nullptr);
   if (display == EGL_NO_DISPLAY) throw egl_failure("eglGetPlatformDisplayEXT gave no display");

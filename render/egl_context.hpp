@@ -10,6 +10,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <initializer_list>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -20,8 +21,9 @@ namespace amls {
 
 // "EGL_BAD_MATCH (0x3009)" for eglGetError()'s code now.
 std::string egl_error_text();
-// The extensions EGL has without a display (EGL_EXT_client_extensions), or "" without any.
-std::string egl_client_extensions();
+// Throws std::runtime_error naming the first of `names` that libEGL lacks as a client extension
+// (or saying that it found no EGL driver at all).
+void require_egl_client_extensions(std::initializer_list<const char*> names);
 
 // An extension function, looked up by name; throws std::runtime_error naming it if EGL lacks it.
 template <typename Function>

@@ -26,9 +26,7 @@ std::string device_description(int index, int count, const std::string& extensio
 // The devices eglQueryDevicesEXT lists, each with its extension string.
 struct EglDevices {
   EglDevices() {
-    const std::string client = egl_client_extensions();
-    for (const char* needed : {"EGL_EXT_device_enumeration", "EGL_EXT_device_query", "EGL_EXT_platform_device"})
-      if (!has_extension(client, needed)) throw std::runtime_error(std::string("libEGL lacks ") + needed);
+    require_egl_client_extensions({"EGL_EXT_device_enumeration", "EGL_EXT_device_query", "EGL_EXT_platform_device"});
     const auto query_devices = egl_function<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
     query_string = egl_function<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
     EGLint count = 0;

@@ -31,7 +31,7 @@ else
   ctest --test-dir "$build_dir" --output-on-failure --parallel "$jobs" -L '^render$' "$@"
 fi
 # Nothing in this build may have linked OSMesa.
-if ldd "$build_dir/app/amls" "$build_dir/tests/amls_render_tests" | grep -i osmesa; then
+if ldd "$build_dir/app/amls" "$build_dir/tests/amls_render_tests" | grep libOSMesa; then
   echo "no_osmesa: a program built with AMLS_WITH_OSMESA=OFF links OSMesa" >&2
   exit 1
 fi

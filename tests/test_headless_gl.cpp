@@ -45,16 +45,13 @@ bool built(HeadlessBackend backend) {
 // A sphere of 1,500 splats seen at an angle, with its normals, a quality ramp, a ring of
 // line segments round it and two handles: every pass the renderer has (points, lines, dots).
 RenderJob every_pass_job(const HeadlessGlChoice& gl) {
-  RenderJob job;
-  job.width = 160;
-  job.height = 120;
-  job.camera = Camera::orbit();
-  job.camera->azimuth_deg = 30.0f;
-  job.camera->elevation_deg = 20.0f;
-  job.options.show_normals = true;
-  job.options.color_mode = ColorMode::scalar;
-  job.gl = gl;
-  return job;
+  Camera camera = Camera::orbit();
+  camera.azimuth_deg = 30.0f;
+  camera.elevation_deg = 20.0f;
+  RenderOptions options;
+  options.show_normals = true;
+  options.color_mode = ColorMode::scalar;
+  return {.width = 160, .height = 120, .camera = camera, .options = options, .gl = gl};
 }
 
 void fill_every_pass(SplatRenderer& renderer) {
@@ -160,7 +157,8 @@ TEST_CASE("AMLS_GL_BACKEND and AMLS_EGL_DEVICE: names and indices only, a bad va
 
 TEST_CASE("EGL on Mesa's software device and OSMesa draw the same bytes (both llvmpipe)") {
   if (!built(osmesa) || !built(egl_device)) {
-    MESSAGE("skipped: this build lacks " << (built(osmesa) ? "EGL" : "OSMesa") << " (AMLS_WITH_EGL, AMLS_WITH_OSMESA)");
+    MESSAGE("skipped: this build lacks " << std::string(built(osmesa) ? "EGL" : "OSMesa")
+                                          << " (AMLS_WITH_EGL, AMLS_WITH_OSMESA)");
     return;
   }
   const std::optional<int> software = software_egl_device();
@@ -204,7 +202,7 @@ TEST_CASE("each headless backend built gives what it was asked for, and draws as
     } else if (used.gl_renderer == reference_renderer) {
       CHECK(image == *reference);
     } else {
-      MESSAGE(to_string(backend) << " draws on " << used.gl_renderer << ", not " << reference_renderer
+      MESSAGE(std::string(to_string(backend)) << " draws on " << used.gl_renderer << ", not " << reference_renderer
                                  << ": its pixels are not compared");
     }
   }
