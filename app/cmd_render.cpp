@@ -1,4 +1,4 @@
-// amls render: a point set, mesh or scene drawn headless (OSMesa) into a PNG.
+// amls render: a point set, mesh or scene drawn headless (EGL or OSMesa) into a PNG.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -12,6 +12,7 @@
 #include "app/terminal_progress.hpp"
 #include "core/surface/spacing_band.hpp"
 #include "render/headless.hpp"
+#include "render/offscreen_context.hpp"
 
 namespace amls::app {
 
@@ -33,10 +34,14 @@ struct RenderCommandOptions {
   bool no_curve = false;
   bool no_handles = false;
   int supersample = 2;
+  std::string gl_backend;
+  std::string egl_device;
+  bool verbose = false;
 };
 
 constexpr const char* kDescription =
-    "draw a point set, mesh or scene into a PNG, headless (OpenGL 3.3 core through OSMesa; no display needed).\n"
+    "draw a point set, mesh or scene into a PNG, headless (OpenGL 3.3 core through EGL - a GPU if there is one, else "
+    "Mesa's llvmpipe - or OSMesa; no display needed; --verbose says which).\n"
     "INPUT: a point set (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D; normals estimated where the file has none), "
     "a triangle mesh (.obj, .ply or .off with faces; sampled at h with face normals) or a scene (.json; its state "
     "after --step K steps, with its handles).\n"
@@ -96,6 +101,14 @@ void add_render_command(CLI::App& app) {
                   "anti-aliasing: draw N times larger each way and average N x N pixels (1: off, exact colours)")
       ->check(in_range(ranges::kSupersample))
       ->capture_default_str();
+  cmd->add_option("--gl-backend", options->gl_backend,
+                  "headless OpenGL: auto (EGL on a device, GPUs first, then EGL surfaceless, then OSMesa), "
+                  "egl-device, egl-surfaceless or osmesa (default: $AMLS_GL_BACKEND, else auto)");
+  cmd->add_option("--egl-device", options->egl_device,
+                  "the EGL device to draw on, by its index in eglQueryDevicesEXT's list (0, 1, ...; default: "
+                  "$AMLS_EGL_DEVICE, else GPUs first, Mesa's software device last); implies egl-device");
+  cmd->add_flag("--verbose", options->verbose, "also print which OpenGL drew the image (backend, device, GL_VERSION, "
+                                               "GL_RENDERER) and the backends that failed before it");
   cmd->callback([options] {
     // Check everything that needs no work before the input is read (a scene may run for a while).
     const ImageSize size = parse_image_size(options->size, "--size");
@@ -105,6 +118,17 @@ void add_render_command(CLI::App& app) {
     render.color_mode = color_mode_from_string(options->color.c_str());
     render.show_normals = options->normals;
     render.show_handles = !options->no_handles;
+    // The options, where given, replace the environment's choice whole (a variable set for other
+    // programs never mixes with them).
+    HeadlessGlChoice gl;
+    if (options->gl_backend.empty() && options->egl_device.empty()) {
+      gl = headless_gl_choice_from_environment();
+    } else {
+      gl.backend = headless_backend_from_string(options->gl_backend, "--gl-backend");
+      if (!options->egl_device.empty())
+        gl.egl_device = egl_device_index_from_string(options->egl_device, "--egl-device");
+    }
+    headless_backend_order(gl, headless_backends_built());  // a conflict or a backend not built: refused now
 
     PictureInputOptions input;
     if (!options->step.empty()) {
@@ -144,7 +168,13 @@ void add_render_command(CLI::App& app) {
       throw std::invalid_argument("--view is for 3D inputs; a 2D input is always seen from above, framed to fit");
     RenderJob job = picture_job(picture, size, view, render);
     job.supersample = options->supersample;
-    render_to_png(options->out, job, [&](SplatRenderer& renderer) { picture.fill(renderer); });
+    job.gl = gl;
+    const HeadlessGlInfo gl_used =
+        render_to_png(options->out, job, [&](SplatRenderer& renderer) { picture.fill(renderer); });
+    if (options->verbose) {
+      for (const std::string& failure : gl_used.failures) std::cout << "OpenGL backend failed: " << failure << "\n";
+      std::cout << "OpenGL: " << gl_used.summary() << "\n";
+    }
     std::cout << picture.description << "\n";
     if (picture.dimension == 2 && input.curve) std::cout << "MLS curve: " << picture.curve.size() / 2 << " segments\n";
     std::cout << "wrote " << options->out << " (" << size.width << "x" << size.height << ")\n";

@@ -4,8 +4,9 @@
 // into new memory, and into the memory of points let go, as during a drag)
 // and the UI thread's (the points and their colours handed to the renderer,
 // finished with glFinish before the clock stops), on the current machine's
-// OpenGL (OSMesa's llvmpipe). The UI's share is timed into the buffers of the
-// last point set (a drag's steps) and into new ones (a load), persistently
+// headless OpenGL (EGL or OSMesa; AMLS_GL_BACKEND chooses). The UI's share is
+// timed into the buffers of the last point set (a drag's steps) and into new
+// ones (a load), persistently
 // mapped where the context can and with glBufferSubData. The median of
 // `repeats` runs each.
 //   amls_upload_bench [points] [threads] [repeats]   (defaults: 1000000 2 9)
@@ -50,7 +51,7 @@ int main(int argc, char** argv) try {
   const int threads = argc > 2 ? std::max(1, std::atoi(argv[2])) : 2;
   const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 9;
   OffscreenContext context(64, 64);
-  std::printf("amls_upload_bench: %zu points, %s, median of %d\n", count, context.renderer().c_str(), repeats);
+  std::printf("amls_upload_bench: %zu points, %s, median of %d\n", count, context.info().summary().c_str(), repeats);
   const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, count);
   const double spacing = 1e-3;
 

@@ -34,7 +34,8 @@ Image box_downsample(const Image& large, int factor) {
 
 }  // namespace
 
-Image render_offscreen(const RenderJob& job, const std::function<void(SplatRenderer&)>& fill) {
+Image render_offscreen(const RenderJob& job, const std::function<void(SplatRenderer&)>& fill,
+                       HeadlessGlInfo* gl_used) {
   const int s = job.supersample;
   if (s < 1 || s > kMaxSupersample)
     throw std::invalid_argument("supersampling factor must be from 1 to " + std::to_string(kMaxSupersample) + ", got " +
@@ -43,7 +44,9 @@ Image render_offscreen(const RenderJob& job, const std::function<void(SplatRende
     throw std::invalid_argument("image " + std::to_string(job.width) + "x" + std::to_string(job.height) +
                                 " supersampled " + std::to_string(s) + " times exceeds " +
                                 std::to_string(kMaxImageSide) + " pixels a side");
-  OffscreenContext context(job.width * s, job.height * s);
+  OffscreenContext context(job.width * s, job.height * s,
+                           job.gl ? *job.gl : headless_gl_choice_from_environment());
+  if (gl_used != nullptr) *gl_used = context.info();
   SplatRenderer renderer;
   fill(renderer);
   const BoundingSphere bounds = renderer.bounds();
@@ -63,16 +66,18 @@ Image render_offscreen(const RenderJob& job, const std::function<void(SplatRende
   return s == 1 ? image : box_downsample(image, s);
 }
 
-void render_to_png(const std::filesystem::path& png, const RenderJob& job,
-                   const std::function<void(SplatRenderer&)>& fill) {
-  write_png(png, render_offscreen(job, fill));
+HeadlessGlInfo render_to_png(const std::filesystem::path& png, const RenderJob& job,
+                             const std::function<void(SplatRenderer&)>& fill) {
+  HeadlessGlInfo gl_used;
+  write_png(png, render_offscreen(job, fill, &gl_used));
+  return gl_used;
 }
 
 template <int D>
-void render_to_png(const std::filesystem::path& png, const RenderJob& job, const PointSet<D>& points,
-                   std::optional<double> spacing) {
+HeadlessGlInfo render_to_png(const std::filesystem::path& png, const RenderJob& job, const PointSet<D>& points,
+                             std::optional<double> spacing) {
   if (points.empty()) throw std::invalid_argument("cannot render an empty point set");
-  render_to_png(png, job, [&](SplatRenderer& renderer) {
+  return render_to_png(png, job, [&](SplatRenderer& renderer) {
     const PointUpload upload = renderer.set_points(points, spacing);
     if (upload.drawn == 0)
       throw std::invalid_argument("cannot render: none of the " + std::to_string(points.size()) +
@@ -80,9 +85,9 @@ void render_to_png(const std::filesystem::path& png, const RenderJob& job, const
   });
 }
 
-template void render_to_png<2>(const std::filesystem::path&, const RenderJob&, const PointSet<2>&,
-                               std::optional<double>);
-template void render_to_png<3>(const std::filesystem::path&, const RenderJob&, const PointSet<3>&,
-                               std::optional<double>);
+template HeadlessGlInfo render_to_png<2>(const std::filesystem::path&, const RenderJob&, const PointSet<2>&,
+                                         std::optional<double>);
+template HeadlessGlInfo render_to_png<3>(const std::filesystem::path&, const RenderJob&, const PointSet<3>&,
+                                         std::optional<double>);
 
 }  // namespace amls

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "render/camera.hpp"
+#include "render/headless_gl_choice.hpp"
 #include "render/image.hpp"
 #include "render/splat_renderer.hpp"
 
@@ -28,18 +29,22 @@ struct RenderJob {
   // sizes in `options` scaled alike) and each output pixel is the mean of its s x s block.
   // 1 draws directly, so that every pixel has an exact colour. From 1 to 8.
   int supersample = 1;
+  // Which headless OpenGL to draw with; none: the environment's choice (AMLS_GL_BACKEND, AMLS_EGL_DEVICE).
+  std::optional<HeadlessGlChoice> gl;
 };
 
 // `fill` puts the scene into the renderer (points, scalars, curve, handles). Throws
 // std::invalid_argument for a bad size or supersampling factor, or an empty scene; see OffscreenContext and
-// SplatRenderer for the rest.
-Image render_offscreen(const RenderJob& job, const std::function<void(SplatRenderer&)>& fill);
-void render_to_png(const std::filesystem::path& png, const RenderJob& job,
-                   const std::function<void(SplatRenderer&)>& fill);
+// SplatRenderer for the rest. `gl_used`, if given, receives which OpenGL drew the image.
+Image render_offscreen(const RenderJob& job, const std::function<void(SplatRenderer&)>& fill,
+                       HeadlessGlInfo* gl_used = nullptr);
+// Returns which OpenGL drew the image.
+HeadlessGlInfo render_to_png(const std::filesystem::path& png, const RenderJob& job,
+                             const std::function<void(SplatRenderer&)>& fill);
 
 // A point set alone. Throws std::invalid_argument if it is empty or no point is drawable.
 template <int D>
-void render_to_png(const std::filesystem::path& png, const RenderJob& job, const PointSet<D>& points,
-                   std::optional<double> spacing = std::nullopt);
+HeadlessGlInfo render_to_png(const std::filesystem::path& png, const RenderJob& job, const PointSet<D>& points,
+                             std::optional<double> spacing = std::nullopt);
 
 }  // namespace amls

@@ -20,7 +20,7 @@ fi
 cmake -S "$repo_root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAMLS_SANITIZE_ADDRESS=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" "${launcher[@]}" >/dev/null
 cmake --build "$build_dir" --parallel "$jobs"
-# Leaks inside Mesa's software renderer (OSMesa, llvmpipe) are not ours.
+# Leaks inside Mesa's software renderer (EGL or OSMesa, llvmpipe) are not ours.
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1:${ASAN_OPTIONS:-}"
 export LSAN_OPTIONS="suppressions=$repo_root/scripts/sanitizers/lsan_suppressions.txt:print_suppressions=0:${LSAN_OPTIONS:-}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"

@@ -10,7 +10,7 @@ build_dir="${AMLS_BUILD_DIR:-$repo_root/build}"
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev doctest-dev libcli11-dev nlohmann-json3-dev libnanoflann-dev
-  libglfw3-dev libglm-dev libimgui-dev libstb-dev libosmesa6-dev libgl1-mesa-dev python3-glad
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev libegl-dev libosmesa6-dev libgl1-mesa-dev python3-glad
   xvfb xauth xdotool
 )
 

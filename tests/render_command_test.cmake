@@ -61,4 +61,23 @@ render_fails("--color" "${WORK_DIR}/bad.png" "${WORK_DIR}/octahedron.xyz" --colo
 render_fails("--view" "${WORK_DIR}/bad.png" "${WORK_DIR}/octahedron.xyz" --view 30,95)
 render_fails("--step" "${WORK_DIR}/bad.png" "${SCENE}" --step 100000)
 render_fails("--step" "${WORK_DIR}/bad.png" "${WORK_DIR}/octahedron.xyz" --step 2)
-message(STATUS "amls render: PNGs of the asked size; bad input fails clearly")
+
+# --verbose names the headless OpenGL that drew the image (docs/headless-rendering.md).
+execute_process(COMMAND "${AMLS}" render "${WORK_DIR}/octahedron.xyz" --out "${WORK_DIR}/verbose.png" --size 32x24
+                        --verbose
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "OpenGL: (egl-device|egl-surfaceless|osmesa)[^\n]*; OpenGL [34]\\.[0-9]")
+  message(FATAL_ERROR "amls render --verbose did not name the OpenGL backend and version (${code}):\n${out}${err}")
+endif()
+check_png("${WORK_DIR}/verbose.png" 32 24)
+# The backend options and variables are checked before any work; options replace the variables whole.
+render_fails("--gl-backend: 'vulkan' is not a headless OpenGL backend" "${WORK_DIR}/bad.png"
+             "${WORK_DIR}/octahedron.xyz" --gl-backend vulkan)
+render_fails("--egl-device: 'first' is not an EGL device index" "${WORK_DIR}/bad.png" "${WORK_DIR}/octahedron.xyz"
+             --egl-device first)
+set(ENV{AMLS_GL_BACKEND} bogus)
+render_fails("AMLS_GL_BACKEND: 'bogus'" "${WORK_DIR}/bad.png" "${WORK_DIR}/octahedron.xyz")
+render_ok("${WORK_DIR}/octahedron.xyz" --out "${WORK_DIR}/auto.png" --size 16x16 --gl-backend auto)
+unset(ENV{AMLS_GL_BACKEND})
+check_png("${WORK_DIR}/auto.png" 16 16)
+message(STATUS "amls render: PNGs of the asked size; the OpenGL used is named; bad input fails clearly")

@@ -1,5 +1,5 @@
 // `amls render`'s path (app/picture_input.hpp, app/render_arguments.hpp,
-// render/picture.hpp) on small files, rendered headless (OSMesa).
+// render/picture.hpp) on small files, rendered headless (EGL or OSMesa).
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Headless rendering (OSMesa, Mesa's llvmpipe): real pixels of real frames.
+// Headless rendering (EGL or OSMesa, render/offscreen_context.hpp): real pixels of real frames.
 // Set AMLS_RENDER_TEST_PNG_DIR to a folder to keep every rendered frame as a PNG.
 #include <doctest/doctest.h>
 
