@@ -78,3 +78,38 @@ TEST_CASE("normal estimation: separate parts are each oriented, with a warning")
   few.add(Vec<3>::Zero(), Vec<3>::Zero());
   CHECK_THROWS(estimate_normals(few, 0.1, pool));
 }
+
+TEST_CASE("normal estimation: an open surface takes its convex side, a flat one keeps up") {
+  ThreadPool pool(1);
+  const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, 6000);
+  SUBCASE("a bowl, whose highest points are on its rim: outward, away from its centroid") {
+    PointSet<3> bowl;
+    for (std::size_t i = 0; i < sphere.size(); ++i)
+      if (sphere.positions[i].z() < -0.3) bowl.add(sphere.positions[i], sphere.normals[i]);
+    PointSet<3> points = scrambled(bowl);
+    const NormalEstimation report = estimate_normals(points, 0.12, pool);
+    check_oriented(points, bowl, 5.0);
+    CHECK(report.turned_parts == 1);
+  }
+  SUBCASE("a cap: outward already from its highest point") {
+    PointSet<3> cap;
+    for (std::size_t i = 0; i < sphere.size(); ++i)
+      if (sphere.positions[i].z() > 0.3) cap.add(sphere.positions[i], sphere.normals[i]);
+    PointSet<3> points = scrambled(cap);
+    const NormalEstimation report = estimate_normals(points, 0.12, pool);
+    check_oriented(points, cap, 5.0);
+    CHECK(report.turned_parts == 0);
+  }
+  SUBCASE("a noisy plane: up") {
+    PointSet<3> plane;
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> noise(-0.002, 0.002);
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) plane.add(Vec<3>(0.05 * i + noise(random), 0.05 * j + noise(random), noise(random)),
+                                              Vec<3>(0, 0, 1));
+    PointSet<3> points = scrambled(plane);
+    const NormalEstimation report = estimate_normals(points, 0.15, pool);
+    check_oriented(points, plane, 10.0);
+    CHECK(report.turned_parts == 0);
+  }
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,28 +42,84 @@ std::vector<double> kth_neighbour_distances(const std::vector<Vec<D>>& positions
 
 std::string SampleSpacing::explanation() const {
   std::ostringstream out;
-  out << "the median distance from each of the " << points << " points to its " << kSpacingNeighbours
-      << "th nearest neighbour (" << kth_median << ") / " << kSpacingNeighbourDivisor
-      << "; median nearest-neighbour distance " << nearest_median;
+  if (rule == SpacingRule::recorded) {
+    out << "the spacing the file records ('amls spacing')";
+    return out.str();
+  }
+  const std::string neighbours = "the median distance from each of the " + std::to_string(points) + " points to its " +
+                                 std::to_string(kSpacingNeighbours) + "th nearest neighbour";
+  if (rule == SpacingRule::grid_lines) {
+    out << "the step between the grid lines the points lie on: " << 100.0 * grid_lines.share
+        << " % of them share all coordinates but one with other points; " << neighbours << ", halved, would give "
+        << neighbour_h;
+    return out.str();
+  }
+  out << neighbours << " (" << kth_median << ") / " << kSpacingNeighbourDivisor << "; median nearest-neighbour distance "
+      << nearest_median;
   return out.str();
 }
 
 template <int D>
-SampleSpacing sample_spacing(const std::vector<Vec<D>>& positions) {
+GridLines grid_lines_of(const std::vector<Vec<D>>& positions) {
+  GridLines out;
+  const std::size_t n = positions.size();
+  if (n < 2) return out;
+  std::vector<std::uint8_t> shared_axes(n, 0);
+  std::vector<double> steps;
+  std::vector<std::pair<double, std::uint32_t>> values(n);
+  for (int a = 0; a < D; ++a) {
+    for (std::size_t i = 0; i < n; ++i) values[i] = {positions[i][a], static_cast<std::uint32_t>(i)};
+    std::sort(values.begin(), values.end());
+    // Runs of equal values: a grid line's coordinate, computed once per line, is equal bit for bit.
+    bool any_before = false;
+    double before = 0.0;
+    for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
+      for (end = begin + 1; end < n && values[end].first == values[begin].first;) ++end;
+      if (end - begin < 2) continue;
+      for (std::size_t k = begin; k < end; ++k) ++shared_axes[values[k].second];
+      if (any_before) steps.push_back(values[begin].first - before);
+      before = values[begin].first;
+      any_before = true;
+    }
+  }
+  const auto on_lines = std::count(shared_axes.begin(), shared_axes.end(), std::uint8_t{D - 1});
+  out.share = static_cast<double>(on_lines) / static_cast<double>(n);
+  if (!steps.empty()) out.step = median_of(std::move(steps));
+  return out;
+}
+
+template <int D>
+SampleSpacing sample_spacing(const std::vector<Vec<D>>& positions, double recorded) {
   SampleSpacing s;
   s.points = positions.size();
+  if (recorded != 0.0) {
+    if (!(recorded > 0.0) || !std::isfinite(recorded))
+      throw std::invalid_argument("the recorded spacing must be a positive number, got " + std::to_string(recorded));
+    s.rule = SpacingRule::recorded;
+    s.h = recorded;
+    return s;
+  }
   s.nearest_median = median_of(kth_neighbour_distances<D>(positions, 1));
   s.kth_median = median_of(kth_neighbour_distances<D>(positions, kSpacingNeighbours));
   if (!(s.kth_median > 0.0))
     throw std::invalid_argument("most of the " + std::to_string(positions.size()) +
                                 " points coincide with others, so they have no spacing to choose h from");
-  s.h = s.kth_median / kSpacingNeighbourDivisor;
+  s.neighbour_h = s.kth_median / kSpacingNeighbourDivisor;
+  s.h = s.neighbour_h;
+  s.grid_lines = grid_lines_of<D>(positions);
+  const double ratio = s.grid_lines.step / s.neighbour_h;
+  if (s.grid_lines.share >= kGridLineShare && ratio >= kGridLineBandLow && ratio <= kGridLineBandHigh) {
+    s.rule = SpacingRule::grid_lines;
+    s.h = s.grid_lines.step;
+  }
   return s;
 }
 
 template std::vector<double> kth_neighbour_distances<2>(const std::vector<Vec<2>>&, int);
 template std::vector<double> kth_neighbour_distances<3>(const std::vector<Vec<3>>&, int);
-template SampleSpacing sample_spacing<2>(const std::vector<Vec<2>>&);
-template SampleSpacing sample_spacing<3>(const std::vector<Vec<3>>&);
+template GridLines grid_lines_of<2>(const std::vector<Vec<2>>&);
+template GridLines grid_lines_of<3>(const std::vector<Vec<3>>&);
+template SampleSpacing sample_spacing<2>(const std::vector<Vec<2>>&, double);
+template SampleSpacing sample_spacing<3>(const std::vector<Vec<3>>&, double);
 
 }  // namespace amls
