@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <cstdint>
 #include <sstream>
 #include <stdexcept>
@@ -50,7 +51,7 @@ std::string SampleSpacing::explanation() const {
                                  std::to_string(kSpacingNeighbours) + "th nearest neighbour";
   if (rule == SpacingRule::grid_lines) {
     out << "the step between the grid lines the points lie on: " << 100.0 * grid_lines.share
-        << " % of them share all coordinates but one with other points; " << neighbours << ", halved, would give "
+        << " % of them have all coordinates but one on the lines' lattice; " << neighbours << ", halved, would give "
         << neighbour_h;
     return out.str();
   }
@@ -59,32 +60,76 @@ std::string SampleSpacing::explanation() const {
   return out.str();
 }
 
+namespace {
+
+// x's place between two multiples of `step`, in [0, 1).
+double residue(double x, double step) {
+  const double r = std::fmod(x, step) / step;
+  return r < 0.0 ? r + 1.0 : r;
+}
+
+// The residue (in [0, 1)) of the lattice most of `shared` lie on: the densest
+// cluster of their residues, within kGridLineTolerance, around the circle.
+// (A free coordinate may be shared too, by a symmetry of the shape, but lies off the lattice.)
+double lattice_residue(const std::vector<double>& shared, double step) {
+  std::vector<double> r;
+  r.reserve(shared.size() * 2);
+  for (double x : shared) r.push_back(residue(x, step));
+  std::sort(r.begin(), r.end());
+  const std::size_t m = r.size();
+  for (std::size_t i = 0; i < m && r[i] <= 2.0 * kGridLineTolerance; ++i) r.push_back(r[i] + 1.0);
+  std::size_t best = 0, begin = 0;
+  double at = r.front();
+  for (std::size_t end = 0; end < r.size(); ++end) {
+    while (r[end] - r[begin] > 2.0 * kGridLineTolerance) ++begin;
+    if (end - begin + 1 > best) {
+      best = end - begin + 1;
+      at = r[begin + (end - begin) / 2];
+    }
+  }
+  return at >= 1.0 ? at - 1.0 : at;
+}
+
+}  // namespace
+
 template <int D>
 GridLines grid_lines_of(const std::vector<Vec<D>>& positions) {
   GridLines out;
   const std::size_t n = positions.size();
   if (n < 2) return out;
-  std::vector<std::uint8_t> shared_axes(n, 0);
+  // Per axis, the values several points share: a grid line's coordinate, computed
+  // once per line, is equal bit for bit on all its points.
   std::vector<double> steps;
-  std::vector<std::pair<double, std::uint32_t>> values(n);
+  std::array<std::vector<double>, D> shared;
+  std::vector<double> values(n);
   for (int a = 0; a < D; ++a) {
-    for (std::size_t i = 0; i < n; ++i) values[i] = {positions[i][a], static_cast<std::uint32_t>(i)};
+    for (std::size_t i = 0; i < n; ++i) values[i] = positions[i][a];
     std::sort(values.begin(), values.end());
-    // Runs of equal values: a grid line's coordinate, computed once per line, is equal bit for bit.
-    bool any_before = false;
-    double before = 0.0;
     for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
-      for (end = begin + 1; end < n && values[end].first == values[begin].first;) ++end;
+      for (end = begin + 1; end < n && values[end] == values[begin];) ++end;
       if (end - begin < 2) continue;
-      for (std::size_t k = begin; k < end; ++k) ++shared_axes[values[k].second];
-      if (any_before) steps.push_back(values[begin].first - before);
-      before = values[begin].first;
-      any_before = true;
+      if (!shared[a].empty()) steps.push_back(values[begin] - shared[a].back());
+      shared[a].push_back(values[begin]);
     }
   }
-  const auto on_lines = std::count(shared_axes.begin(), shared_axes.end(), std::uint8_t{D - 1});
+  if (steps.empty()) return out;
+  out.step = median_of(std::move(steps));
+  if (!(out.step > 0.0)) return out;
+  std::array<double, D> lattice{};
+  for (int a = 0; a < D; ++a)
+    if (!shared[a].empty()) lattice[a] = lattice_residue(shared[a], out.step);
+  auto on_lattice = [&](int a, double x) {
+    if (shared[a].empty()) return false;
+    const double d = std::abs(residue(x, out.step) - lattice[a]);
+    return std::min(d, 1.0 - d) <= kGridLineTolerance;
+  };
+  std::size_t on_lines = 0;
+  for (const Vec<D>& p : positions) {
+    int axes = 0;
+    for (int a = 0; a < D; ++a) axes += on_lattice(a, p[a]) ? 1 : 0;
+    on_lines += axes == D - 1 ? 1 : 0;
+  }
   out.share = static_cast<double>(on_lines) / static_cast<double>(n);
-  if (!steps.empty()) out.step = median_of(std::move(steps));
   return out;
 }
 

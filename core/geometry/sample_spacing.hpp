@@ -8,10 +8,12 @@
 // 2. grid lines: points that are crossings of a surface with the edges of a
 //    grid (amls's own output, and marching cubes' vertices) lie on the grid's
 //    lines: each point has D - 1 coordinates that are some grid vertex's,
-//    shared with the other points on that line. When at least kGridLineShare
-//    of the points are such, h is the step between those shared coordinate
-//    values (the median step), if it lies within kGridLineBand of the
-//    neighbour rule's h - so that reading back an output made at h gives h
+//    shared bit for bit with the other points on that line. The step is the
+//    median step between consecutive shared values along the axes; when at
+//    least kGridLineShare of the points have exactly D - 1 coordinates on the
+//    lattice of that step that most shared values lie on (per axis), and the step lies within
+//    the band [kGridLineBandLow, kGridLineBandHigh] times the neighbour rule's
+//    h, h is the step - so that reading back an output made at h gives h
 //    again, where the neighbour rule gives 0.58 h (neighbours about 1.16 h
 //    apart) and every round trip would triple the points;
 // 3. neighbours: the median, over the points, of the distance to their kth
@@ -36,12 +38,15 @@ double median_of(std::vector<double> values);
 
 inline constexpr int kSpacingNeighbours = 4;
 inline constexpr double kSpacingNeighbourDivisor = 2.0;
-// Grid-line samples: the share of points with exactly D - 1 coordinates shared
-// with another point (a scan has some shared by chance or rounding, on any
-// number of axes, far below this share: docs/real-data.md), and the band, in
-// units of the neighbour rule's h, the step must lie in (amls's output: 1.72).
+// Grid-line samples: the share of points with exactly D - 1 coordinates on the
+// lattice (a scattered scan has almost none, a quantised one has all D on it,
+// and on a lattice far finer than its spacing: docs/real-data.md), the band, in units
+// of the neighbour rule's h, the step must lie in (amls's output: 1.72 in 3D,
+// 0.92 on a 2D curve), and how near a multiple of the step a coordinate must
+// lie, in steps (files rounded to float keep about 1e-4).
 inline constexpr double kGridLineShare = 0.9;
-inline constexpr double kGridLineBandLow = 1.0;
+inline constexpr double kGridLineTolerance = 1e-3;
+inline constexpr double kGridLineBandLow = 0.75;
 inline constexpr double kGridLineBandHigh = 3.0;
 
 // Every point's distance to its kth nearest other point (k >= 1), in the
@@ -55,7 +60,7 @@ enum class SpacingRule { recorded, grid_lines, neighbours };
 
 // Points on the lines of a grid: coordinates shared by several points, and the step between them.
 struct GridLines {
-  double share = 0.0;  // of the points, those with exactly D - 1 coordinates shared with another point
+  double share = 0.0;  // of the points, those with exactly D - 1 coordinates on the lattice of `step`
   double step = 0.0;   // median step between consecutive shared values along an axis (0: none)
 };
 
