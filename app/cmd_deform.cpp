@@ -61,10 +61,12 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
   if (!options.out_dir.empty()) out.emplace(options.out_dir, kReportName);
   std::optional<PointSet<D>> last_frame;  // for --mesh
   FrameSink<D> frames;
+  // Resampled frames record the run's h, so that opening one chooses it again.
+  const double frame_spacing = run_options.resample ? scene.h() : 0.0;
   if (out || !options.mesh_path.empty())
     frames = [&](std::size_t step, const PointSet<D>& points) {
       if (out && (step % options.frames_every == 0 || step == steps))
-        write_point_set(out->file(frame_name(step, steps, options.format)), points, format);
+        write_point_set(out->file(frame_name(step, steps, options.format)), points, format, frame_spacing);
       if (!options.mesh_path.empty() && step == steps) last_frame = points;
     };
   FrameSink<D> exact;

@@ -12,8 +12,8 @@
 #include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
-#include "core/io/surface_samples.hpp"
 #include "core/run/point_set_resampling.hpp"
+#include "core/run/shape_opening.hpp"
 #include "core/util/process_memory.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -33,27 +33,6 @@ struct ResampleOptions {
   bool uniform_support = false;
 };
 
-// Chooses h, says why, and refuses an input whose resampling at h would be too large.
-template <int D>
-double spacing_for(const std::vector<Vec<3>>& positions3, const ResampleOptions& options) {
-  const std::vector<Vec<D>> positions = from_3d<D>(positions3);
-  SpacingChoice choice;
-  try {
-    choice = choose_spacing(positions, options.resampling);
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(options.input + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
-  }
-  std::cout << "h = " << choice.h << " (" << choice.reason << ")\n";
-  if (positions.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
-    try {
-      check_resampling_cost(D, sampled_extent(positions), choice.h, options.resampling);
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(options.input + ": " + e.what());
-    }
-  }
-  return choice.h;
-}
-
 template <int D>
 void resample_and_write(const PointSet<D>& input, std::size_t file_points, const ResampleOptions& options,
                         PointFileFormat format, Stopwatch& clock) {
@@ -64,7 +43,8 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
         "points (is the input too sparse for h = " +
         std::to_string(result.grid.spacing()) + " and --radius-factor " +
         std::to_string(options.resampling.radius_factor) + "?)");
-  write_point_set(options.output, result.points, format);
+  // The spacing goes into the file, so that reading it back chooses this h again.
+  write_point_set(options.output, result.points, format, result.grid.spacing());
   const double seconds = clock.lap();
   const double memory = peak_memory_mib();
   std::cout << "resample (" << D << "D, " << to_string(options.resampling.variant) << "): " << input.size()
@@ -140,8 +120,9 @@ void add_resample_command(CLI::App& app) {
       "outside) and write the new points. Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D "
       "or 3D), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
       "mesh (.obj, .ply or .off with faces; sampled at h with face normals).\n"
-      "h: --spacing, else --grid, else from the input: the median distance from a point (a mesh: a vertex) to its "
-      "4th nearest neighbour, halved (docs/real-data.md). Refused up front when the output would pass 50 million "
+      "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
+      "output), else the step of the grid lines its points lie on (amls's output), else the median distance from a "
+      "point (a mesh: a vertex) to its 4th nearest neighbour, halved (docs/real-data.md). Refused up front when the output would pass 50 million "
       "points. Afterwards the coverage of the input by the output is measured; a clear loss (under 99 % of the "
       "input covered, or under 95 % of the output on the input) fails the command unless --accept-loss");
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .off, .xyz, .pwn, .csv, .txt, .obj)")
@@ -176,26 +157,21 @@ void add_resample_command(CLI::App& app) {
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
     if (!options->mesh.empty()) mesh_format_from_extension(options->mesh);
-    // h first, from the file as read: meshes are sampled at h, and normals are estimated over Delta.
-    SurfaceInput raw = read_surface_input(options->input, options->dimension);
-    const std::size_t file_points = raw.positions().size();
-    const int dimension = raw.dimension();
-    const double h =
-        dimension == 2 ? spacing_for<2>(raw.positions(), *options) : spacing_for<3>(raw.positions(), *options);
-    options->resampling.spacing = h;
+    // The road the editor takes too: read, choose h, sample (meshes at h, missing normals over Delta).
+    ShapeOpening opening;
+    opening.resampling = options->resampling;
+    opening.dimension = options->dimension;
+    ThreadPool pool(options->resampling.threads);
+    OpenedShape shape = open_shape_file(options->input, opening, pool);
+    std::cout << "h = " << shape.spacing.h << " (" << shape.spacing.reason << ")\n";
+    options->resampling.spacing = shape.spacing.h;
     options->resampling.grid = 0;
-    SurfaceSampleOptions sampling;
-    sampling.spacing = h;
-    sampling.normal_radius = options->resampling.radius_factor * h;
-    sampling.dimension = dimension;
-    sampling.threads = options->resampling.threads;
-    SurfaceSamples loaded = surface_samples(std::move(raw), sampling);
-    for (const std::string& warning : loaded.warnings) std::cerr << "amls: warning: " << warning << "\n";
-    std::cout << options->input << ": " << loaded.source << "\n";
-    if (loaded.dimension == 2) {
-      resample_and_write(to_2d(loaded.points), file_points, *options, format, clock);
+    for (const std::string& warning : shape.warnings) std::cerr << "amls: warning: " << warning << "\n";
+    std::cout << options->input << ": " << shape.source << "\n";
+    if (shape.dimension == 2) {
+      resample_and_write(to_2d(shape.points), shape.file_points, *options, format, clock);
     } else {
-      resample_and_write(loaded.points, file_points, *options, format, clock);
+      resample_and_write(shape.points, shape.file_points, *options, format, clock);
     }
   });
 }

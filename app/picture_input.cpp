@@ -133,6 +133,7 @@ Picture file_picture(const std::string& path, const PictureInputOptions& options
       PointSetResampling given;
       given.spacing = options.spacing;
       given.grid = options.grid;
+      given.recorded_spacing = loaded.spacing;
       h = loaded.dimension == 2 ? choose_spacing(to_2d(loaded.points).positions, given).h
                                 : choose_spacing(loaded.points.positions, given).h;
     } catch (const std::invalid_argument& e) {

@@ -17,6 +17,7 @@ point set; on a heavy 3D scene, frames keep coming while the worker resamples.
 The editor's debug log (--debug-log) says when it is ready and where the view
 is. Exits 77 (skipped) without a display or xdotool.
 """
+import math
 import os
 import random
 import re
@@ -323,6 +324,34 @@ def test_frames_during_heavy_step(binary, folder):
     editor.quit()
 
 
+def test_open_without_normals(binary, folder):
+    """A scan without normals opens as `amls resample` opens it: normals estimated and outward."""
+    scan, out = os.path.join(folder, "scan.xyz"), os.path.join(folder, "scan-out.ply")
+    count = 1500
+    with open(scan, "w") as f:
+        for i in range(count):  # a Fibonacci sphere of radius 1, positions only
+            z = 1 - 2 * (i + 0.5) / count
+            r, angle = math.sqrt(1 - z * z), i * math.pi * (3 - math.sqrt(5))
+            f.write("%.17g %.17g %.17g\n" % (r * math.cos(angle), r * math.sin(angle), z))
+    editor = Editor(binary, folder, "editor-scan", [scan, "--export", out], size="640x480")
+    editor.wait_line(r"snapshot .* load=1 dimension=3 points=%d" % count, what="the scan without normals to load")
+    check(editor.count(r"message level=info .*normals estimated") == 1, "the editor says it estimated the normals")
+    check(editor.count(r"message level=error") == 0, "opening the scan gave no error")
+    editor.wait_idle()
+    editor.key("ctrl+s")
+    editor.wait_line("message level=info Exported", what="the export")
+    with open(out, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    check("comment amls spacing " in header, "the export records its h")
+    written = int(re.search(r"element vertex (\d+)", header).group(1))
+    records = [struct.unpack_from("<6d", data, end + i * 48) for i in range(written)]
+    outward = sum(1 for x, y, z, nx, ny, nz in records if x * nx + y * ny + z * nz > 0.9)
+    check(written > 0 and outward == written, "every estimated normal points outward (%d of %d)" % (outward, written))
+    editor.quit()
+
+
 XVFB = None  # the X server the test started, if any
 
 
@@ -382,6 +411,7 @@ def main():
             XVFB = start_xvfb(os.path.join(folder, "xvfb.log"))
         begin = time.monotonic()
         test_2d(binary, folder)
+        test_open_without_normals(binary, folder)
         test_frames_during_heavy_step(binary, folder)
         print("all GUI checks passed in %.1f s" % (time.monotonic() - begin))
     finally:

@@ -31,11 +31,12 @@ TEST_CASE("a folder that cannot be read gives a message and no entries") {
   CHECK(listing.error.find("/nonexistent/folder") != std::string::npos);
 }
 
-TEST_CASE("openable files are point sets and scenes, in any case") {
+TEST_CASE("openable files are point sets, meshes and scenes, in any case") {
   CHECK(is_openable_file("x.PLY"));
   CHECK(is_openable_file("/a/b.xyz"));
   CHECK(is_openable_file("s.json"));
   for (const char* name : {"a.OFF", "b.pwn", "c.csv", "d.txt"}) CHECK(is_openable_file(name));
-  CHECK(!is_openable_file("x.obj"));
+  CHECK(is_openable_file("x.obj"));
+  CHECK(!is_openable_file("x.stl"));
   CHECK(!is_openable_file("ply"));
 }

@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "app/editor/editor_worker.hpp"
 #include "app/editor/sampling_quality.hpp"
 #include "app/editor/scene_start.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
 #include "editor_test_support.hpp"
 
@@ -375,6 +377,40 @@ TEST_CASE("a file or scene that cannot be loaded shows the reader's message and 
     // The status line shows the reader's message, which names the file (once) and the key.
     CHECK(has_message(worker.take_messages(), Message::Level::error, "Cannot open " + path + bad.reason));
   }
+}
+
+TEST_CASE("a point set without normals opens through the worker, its steps shown as the load's phases") {
+  amls::test::TempDir dir;
+  PointSet<3> bare = sample_sphere(Vec<3>::Zero(), 1.0, 4000);
+  bare.normals.clear();
+  const std::string path = dir.file("scan.xyz");
+  write_point_set(path, bare, PointFileFormat::xyz);
+  std::mutex seen_mutex;
+  std::vector<std::string> seen;
+  std::atomic<EditorWorker*> watched = nullptr;
+  WorkerOptions options;
+  // Normal estimation polls the pool's check: note the phase each time.
+  options.on_poll = [&] {
+    EditorWorker* worker = watched.load();
+    if (!worker) return;
+    const std::string activity = worker->status().activity;
+    std::lock_guard lock(seen_mutex);
+    if (seen.empty() || seen.back() != activity) seen.push_back(activity);
+  };
+  EditorWorker worker(options);
+  watched = &worker;
+  worker.post(command::LoadFile{path});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  watched = nullptr;
+  const auto snapshot = worker.snapshot();
+  CHECK(snapshot->dimension == 3);
+  REQUIRE(snapshot->points);
+  CHECK(snapshot->points->input_count == 4000);
+  const auto messages = worker.take_messages();
+  CHECK(has_message(messages, Message::Level::info, "normals estimated"));
+  CHECK(has_message(messages, Message::Level::info, "Loaded scan.xyz: 4000 points, 3D"));
+  std::lock_guard lock(seen_mutex);
+  CHECK(std::find(seen.begin(), seen.end(), "estimating normals") != seen.end());
 }
 
 TEST_CASE("undo and redo through the worker restore the drag's start and end") {

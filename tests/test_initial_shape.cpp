@@ -8,6 +8,7 @@
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/run/scene_run.hpp"
+#include "core/run/shape_opening.hpp"
 #include "core/geometry/shapes.hpp"
 #include "editor_test_support.hpp"
 
@@ -106,11 +107,48 @@ TEST_CASE("a point-set file whose resampling at h loses a part says so") {
         std::string::npos);
 }
 
-TEST_CASE("a point-set file without normals, empty or missing is refused with its name") {
+TEST_CASE("a point-set file without normals opens as amls resample opens it: normals estimated, the same h") {
   amls::test::TempDir dir;
-  const std::string bare = dir.file("bare.xyz");
-  write_text(bare, "0 0 0\n1 0 0\n0 1 0\n");
-  CHECK_THROWS_WITH_AS(load_initial_shape(bare, 1), doctest::Contains("no normals"), std::runtime_error);
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.2, 0.0, -0.1), 1.0, 3000);
+  PointSet<3> bare = sphere;
+  bare.normals.clear();
+  const std::string path = dir.file("bare.xyz");
+  write_point_set(path, bare, PointFileFormat::xyz);
+  std::vector<int> steps;
+  ThreadPool pool(2);
+  const InitialShape shape = load_initial_shape(path, pool, [&](const char*, int index, int count) {
+    CHECK(count == kShapeOpeningSteps + 1);
+    steps.push_back(index);
+  });
+  CHECK(steps == std::vector<int>{0, 1, 2, 3});
+  CHECK(shape.dimension() == 3);
+  REQUIRE(shape.points.size() == sphere.size());
+  std::size_t outward = 0;
+  for (std::size_t i = 0; i < sphere.size(); ++i) outward += shape.points.normals[i].dot(sphere.normals[i]) > 0.9 ? 1 : 0;
+  CHECK(outward == sphere.size());
+  // The command line's h, to the editor's 3 significant digits.
+  const double rule = choose_spacing(sphere.positions, PointSetResampling{}).h;
+  CHECK(shape.settings.spacing == doctest::Approx(rule).epsilon(0.005));
+  CHECK(shape.opened.find("normals estimated") != std::string::npos);
+  CHECK(shape.opened.find("4th nearest neighbour") != std::string::npos);
+  CHECK_FALSE(shape.coverage_loss);
+}
+
+TEST_CASE("a file the editor exported opens again at its h, which the file records") {
+  amls::test::TempDir dir;
+  const std::string path = dir.file("exported.ply");
+  write_point_set(path, sample_sphere(Vec<3>::Zero(), 1.0, 3000), PointFileFormat::ply_binary_little_endian, 0.0432);
+  CHECK(load_initial_shape(path, 1).settings.spacing == 0.0432);
+}
+
+TEST_CASE("a point-set file too small, empty or missing is refused with its name") {
+  amls::test::TempDir dir;
+  const std::string few = dir.file("few.xyz");
+  write_text(few, "0 0 0\n1 0 0\n0 1 0\n");
+  CHECK_THROWS_WITH_AS(load_initial_shape(few, 1), doctest::Contains("few.xyz: cannot choose h"), std::runtime_error);
+  write_text(dir.file("empty.xyz"), "# nothing\n");
+  CHECK_THROWS_WITH_AS(load_initial_shape(dir.file("empty.xyz"), 1), doctest::Contains("empty.xyz: holds no points"),
+                       std::runtime_error);
   CHECK_THROWS_WITH_AS(load_initial_shape(dir.file("missing.ply"), 1), doctest::Contains("missing.ply"),
                        std::runtime_error);
 }

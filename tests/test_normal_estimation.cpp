@@ -78,3 +78,41 @@ TEST_CASE("normal estimation: separate parts are each oriented, with a warning")
   few.add(Vec<3>::Zero(), Vec<3>::Zero());
   CHECK_THROWS(estimate_normals(few, 0.1, pool));
 }
+
+namespace {
+
+// The samples of `sphere` on one side of the plane z = cut: above, a cap; below, a bowl.
+PointSet<3> sphere_part(const PointSet<3>& sphere, double cut, bool above) {
+  PointSet<3> part;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+    if ((sphere.positions[i].z() > cut) == above) part.add(sphere.positions[i], sphere.normals[i]);
+  return part;
+}
+
+}  // namespace
+
+TEST_CASE("normal estimation: an open surface takes its convex side, a flat one keeps up") {
+  ThreadPool pool(1);
+  const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, 6000);
+  // A bowl's highest points are on its rim, a cap's inside it: both come out on the convex side.
+  for (const bool above : {false, true}) {
+    CAPTURE(above);
+    const PointSet<3> part = sphere_part(sphere, above ? 0.3 : -0.3, above);
+    PointSet<3> points = scrambled(part);
+    const NormalEstimation report = estimate_normals(points, 0.12, pool);
+    check_oriented(points, part, 5.0);
+    CHECK(report.turned_parts == (above ? 0 : 1));
+  }
+  SUBCASE("a noisy plane: up") {
+    PointSet<3> plane;
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> noise(-0.002, 0.002);
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) plane.add(Vec<3>(0.05 * i + noise(random), 0.05 * j + noise(random), noise(random)),
+                                              Vec<3>(0, 0, 1));
+    PointSet<3> points = scrambled(plane);
+    const NormalEstimation report = estimate_normals(points, 0.15, pool);
+    check_oriented(points, plane, 10.0);
+    CHECK(report.turned_parts == 0);
+  }
+}

@@ -7,7 +7,7 @@
 namespace amls::editor {
 
 bool is_openable_file(const std::filesystem::path& path) {
-  return is_point_set_file(path.string()) || lower_extension(path.string()) == ".json";
+  return shape_file_format(path.string()).has_value() || lower_extension(path.string()) == ".json";
 }
 
 DirectoryListing list_directory(const std::filesystem::path& folder) {

@@ -22,7 +22,7 @@ std::optional<int> parse_editor_options(int argc, char** argv, EditorOptions& op
       "Press H in the window for the keyboard and mouse controls."};
   app.set_version_flag("--version", "amls-editor 0.1.0");
   std::string size;
-  app.add_option("input", options.input, "point set (.ply, .xyz with normals) or scene (.json) to open");
+  app.add_option("input", options.input, "point set (.ply, .off, .xyz, .pwn, .csv, .txt; normals estimated where missing), mesh (.obj, .ply, .off) or scene (.json) to open");
   app.add_flag("--3d", options.start_3d, "start with the built-in sphere instead of the circle (no input)");
   app.add_option("--export", options.export_path, "where Ctrl+S writes the point set (.ply with normals, or .xyz)");
   app.add_option("--scene-out", options.scene_path, "where Save Scene (Ctrl+Shift+S) writes the session");

@@ -185,6 +185,7 @@ void EditorWorker::start(const InitialShape& shape) {
   resamples_ = 0;
   step_times_.clear();
   for (const std::string& warning : shape.warnings) message(Message::Level::warning, warning);
+  if (!shape.opened.empty()) message(Message::Level::info, shape.opened);
   std::ostringstream text;
   text << "Loaded " << shape.name << ": " << describe_count(shape.points.size(), "points") << ", " << shape.dimension()
        << "D, h = " << shape.settings.spacing;
@@ -225,9 +226,15 @@ WorkControl EditorWorker::control_for(std::uint64_t epoch) {
                      [this](const char* name, int index, int count) { set_phase(name, index, count); }};
 }
 
-void EditorWorker::load_file(const std::string& path) {
+void EditorWorker::load_file(const std::string& path, const WorkControl& control) {
   try {
-    start(load_initial_shape(path, options_.threads));
+    // On a pool of its own (a session owns its pool), stopped as the command's other work is.
+    ThreadPool pool(options_.threads);
+    CancelScope stop(pool, control.cancelled);
+    start(load_initial_shape(path, pool, control.phase));
+  } catch (const Cancelled&) {
+    message(Message::Level::info, "Opening " + path + " was stopped" +
+                                      (std::holds_alternative<std::monostate>(session_) ? "" : " (the current surface is kept)"));
   } catch (const std::exception& e) {
     // The readers' messages start with the file's path (and name the key in a scene): say it once.
     const std::string why = e.what();
@@ -241,7 +248,8 @@ void EditorWorker::export_points(const std::string& path) {
   on_session([&](auto& s) {
     try {
       s.map_exactly(WorkControl{});  // a local drag's end, if the worker has not waited since
-      write_point_set(path, s.points(), format_from_extension(path));
+      // With the session's h, which opening the file again takes.
+      write_point_set(path, s.points(), format_from_extension(path), s.settings().spacing);
       message(Message::Level::info, "Exported " + describe_count(s.points().size(), "points") + " to " + path);
     } catch (const std::exception& e) {
       message(Message::Level::error, std::string("Export failed (any previous file is intact): ") + e.what());
@@ -281,7 +289,7 @@ void EditorWorker::execute(const QueuedCommand& queued) {
   using namespace command;
   std::visit(
       Overloaded{
-          [&](const LoadFile& c) { load_file(c.path); },
+          [&](const LoadFile& c) { load_file(c.path, control); },
           [&](const LoadShape& c) {
             start(c.dimension == 3 ? make_sphere(c.radius, c.points, c.spacing)
                                    : make_circle(c.radius, c.points, c.spacing));

@@ -81,7 +81,7 @@ std::optional<std::string> FileBrowser::draw(bool& open) {
   ImGui::SameLine();
   if (ImGui::Button("Cancel")) open = false;
   ImGui::SameLine();
-  ImGui::TextDisabled(".ply .xyz (with normals), .json scenes");
+  ImGui::TextDisabled(".ply .off .obj .xyz .pwn .csv .txt (normals estimated where missing), .json scenes");
   ImGui::End();
   if (next_folder) enter(*next_folder);
   if (chosen) open = false;

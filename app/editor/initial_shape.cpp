@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "app/editor/scene_start.hpp"
-#include "core/geometry/sample_spacing.hpp"
 #include "core/io/file_format.hpp"
-#include "core/run/point_set_resampling.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/run/point_set_resampling.hpp"
+#include "core/run/shape_opening.hpp"
 #include "core/util/parameter_ranges.hpp"
 
 namespace amls::editor {
@@ -59,21 +59,12 @@ double round_significant(double x, int digits) {
   return std::round(x * scale) / scale;
 }
 
-// h by the rule every command uses (core/geometry/sample_spacing.hpp).
-template <int D>
-double spacing_of(const PointSet<D>& points, const std::string& path) {
-  try {
-    return sample_spacing<D>(points.positions).h;
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(path + ": " + e.what());
-  }
-}
-
 // One resampling at the shape's h and with its supports, as `amls resample`
 // would do it, and its coverage of the points.
 template <int D>
-void measure_coverage_of(InitialShape& shape, const PointSet<D>& points) {
+void measure_coverage_of(InitialShape& shape, const PointSet<D>& points, int threads) {
   PointSetResampling options;
+  options.threads = threads;
   options.spacing = shape.settings.spacing;
   options.radius_factor = shape.settings.radius_factor;
   options.widen_support = shape.settings.widen_support;
@@ -102,36 +93,48 @@ InitialShape default_shape(int dimension) {
   return dimension == 3 ? make_sphere(1.0, 10000, 0.04) : make_circle(1.0, 250, 0.024);
 }
 
-InitialShape load_point_set_file(const std::string& path) {
-  LoadedPointSet loaded = read_point_set(path);
-  if (loaded.points.empty()) throw std::runtime_error(path + ": the file holds no points");
-  if (!loaded.has_normals)
-    throw std::runtime_error(path +
-                             ": the points have no normals, and the editor needs oriented normals (x y z nx ny nz)");
+InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const LoadStep& step) {
+  // The road's steps, then the coverage.
+  constexpr int kSteps = kShapeOpeningSteps + 1;
+  ShapeOpening opening;
+  opening.resampling.threads = pool.threads();
+  if (step) opening.step = [&](const char* name, int index, int) { step(name, index, kSteps); };
+  OpenedShape opened = open_shape_file(path, opening, pool);
   InitialShape shape;
-  shape.source = loaded.dimension == 2 ? ShapeSource(file_shape<2>(path)) : ShapeSource(file_shape<3>(path));
-  const double spacing =
-      loaded.dimension == 2 ? spacing_of(to_2d(loaded.points), path) : spacing_of(loaded.points, path);
-  shape.settings.spacing = round_significant(spacing, 3);
+  shape.source = opened.dimension == 2 ? ShapeSource(file_shape<2>(path)) : ShapeSource(file_shape<3>(path));
+  shape.settings.spacing = round_significant(opened.spacing.h, 3);
+  shape.settings.radius_factor = opening.resampling.radius_factor;
   // Real data is often sparse in places: widen there, as `amls resample` does.
   shape.settings.widen_support = true;
-  shape.points = std::move(loaded.points);
+  shape.points = std::move(opened.points);
   shape.name = std::filesystem::path(path).filename().string();
-  shape.warnings = std::move(loaded.warnings);
+  shape.warnings = std::move(opened.warnings);
+  shape.opened = path + ": " + opened.source + "; h = " + format_number(shape.settings.spacing) + ": " +
+                 opened.spacing.reason;
+  pool.poll_cancel();
+  if (step) step("measuring the coverage at h", kShapeOpeningSteps, kSteps);
   try {
-    if (loaded.dimension == 2)
-      measure_coverage_of(shape, to_2d(shape.points));
+    if (opened.dimension == 2)
+      measure_coverage_of(shape, to_2d(shape.points), pool.threads());
     else
-      measure_coverage_of(shape, shape.points);
+      measure_coverage_of(shape, shape.points, pool.threads());
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
   return shape;
 }
 
+InitialShape load_initial_shape(const std::string& path, ThreadPool& pool, const LoadStep& step) {
+  if (lower_extension(path) == ".json") {
+    if (step) step("reading the scene", 0, 1);
+    return with_editor_policy(load_scene_start(path, pool.threads()));
+  }
+  return with_editor_policy(load_shape_file(path, pool, step));
+}
+
 InitialShape load_initial_shape(const std::string& path, int threads) {
-  return with_editor_policy(lower_extension(path) == ".json" ? load_scene_start(path, threads)
-                                                            : load_point_set_file(path));
+  ThreadPool pool(threads);
+  return load_initial_shape(path, pool);
 }
 
 }  // namespace amls::editor

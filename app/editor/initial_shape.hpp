@@ -2,9 +2,11 @@
 // The shapes a session starts from: built-in circles and spheres, point-set
 // files and scenes (scene_start.hpp). No GL.
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include "app/editor/surface_settings.hpp"
+#include "core/util/thread_pool.hpp"
 
 namespace amls::editor {
 
@@ -17,17 +19,24 @@ InitialShape make_sphere(double radius, std::size_t points, double spacing);
 // (h = 0.024, as the clover scene), or a sphere of 10 000 points (h = 0.04).
 InitialShape default_shape(int dimension);
 
-// A point set with oriented normals (.ply, .xyz), 2D or 3D; h by the rule of
-// core/geometry/sample_spacing.hpp (3 significant digits), supports widened
-// where the points are sparse (AmlsParameters::widen_support), and the
-// coverage of one resampling at h measured as `amls resample` measures it,
-// with the same supports. Throws
-// std::runtime_error naming the file for a file that cannot be read, has too
-// few points or has no normals.
-InitialShape load_point_set_file(const std::string& path);
+// Called before each step of a load, with its name, index and the count.
+using LoadStep = std::function<void(const char* step, int index, int count)>;
 
-// A scene (.json) or a point-set file, by the extension; `threads` sample a
-// scene's shape file (normal estimation, mesh sampling).
+// A shape file opened on its own - a point set (2D or 3D) with or without
+// normals, or a triangle mesh - by the road `amls resample` takes
+// (core/run/shape_opening.hpp): repaired, h by the rule of
+// core/geometry/sample_spacing.hpp (rounded to 3 significant digits),
+// missing normals estimated and oriented, a mesh sampled at h; supports
+// widened where the points are sparse (AmlsParameters::widen_support), and
+// the coverage of one resampling at h measured as `amls resample` measures
+// it, with the same supports. Work runs on `pool`, whose cancel check stops
+// it (Cancelled). Throws std::runtime_error naming the file for one that
+// cannot be read, has too few points, or whose normals cannot be estimated.
+InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const LoadStep& step = {});
+
+// A scene (.json) or a shape file, by the extension; the pool samples a
+// scene's shape file (normal estimation, mesh sampling) too.
+InitialShape load_initial_shape(const std::string& path, ThreadPool& pool, const LoadStep& step = {});
 InitialShape load_initial_shape(const std::string& path, int threads);
 
 // From this many points on, a shape the editor opens (built-in, file or

@@ -59,6 +59,8 @@ struct InitialShape {
   // as `amls resample` reports it ("" otherwise), and whether that is a clear loss.
   std::string coverage;
   bool coverage_loss = false;
+  // A shape file opened on its own: what was read and done, and why h ("" otherwise).
+  std::string opened;
 
   // The source's dimension is the shape's: one fact, kept once.
   int dimension() const { return std::holds_alternative<SceneShape<2>>(source) ? 2 : 3; }

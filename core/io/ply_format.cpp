@@ -124,7 +124,7 @@ struct Element {
 struct Header {
   Encoding encoding = Encoding::ascii;
   std::vector<Element> elements;
-  int declared_dimension = 0;
+  AmlsComments declared;
   std::size_t lines = 0;  // lines read so far
 };
 
@@ -232,11 +232,7 @@ Header read_header(std::istream& in, const std::string& path) {
       header.encoding = format_line(words, fail_here);
       have_format = true;
     } else if (key == "comment") {
-      const int dimension =
-          parse_dimension_comment(std::span<const std::string_view>(words).subspan(1), path, header.lines);
-      if (dimension != 0 && header.declared_dimension != 0 && dimension != header.declared_dimension)
-        fail_here("conflicting 'amls dim' comments");
-      if (dimension != 0) header.declared_dimension = dimension;
+      header.declared.note(std::span<const std::string_view>(words).subspan(1), path, header.lines);
     } else if (key == "obj_info") {
       // Free text, like a comment.
     } else if (key == "element") {
@@ -558,7 +554,8 @@ RawPointFile read_ply(std::istream& in, std::uint64_t file_size, const std::stri
   raw.path = path;
   Header header = read_header(in, path);
   const VertexLayout layout = vertex_layout(header, path);
-  raw.declared_dimension = header.declared_dimension;
+  raw.declared_dimension = header.declared.dimension;
+  raw.declared_spacing = header.declared.spacing;
   raw.has_normals = layout.has_normals;
   raw.has_faces = layout.face_element != kNone;
   const std::streamoff header_bytes = in.tellg();
@@ -586,13 +583,15 @@ std::uint64_t ply_face_count(std::istream& in, const std::string& path) {
   return layout.face_element == kNone ? 0 : header.elements[layout.face_element].count;
 }
 
-void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, PointFileFormat format) {
+void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, double spacing,
+               PointFileFormat format) {
   std::string text = "ply\nformat ";
   text += format == PointFileFormat::ply_ascii                  ? "ascii"
           : format == PointFileFormat::ply_binary_little_endian ? "binary_little_endian"
                                                                 : "binary_big_endian";
-  text += " 1.0\ncomment amls dim " + std::to_string(dimension) + "\nelement vertex " + std::to_string(points.size()) +
-          "\nproperty double x\nproperty double y\nproperty double z\n";
+  text += " 1.0\n";
+  for (const std::string& comment : amls_comment_lines(dimension, spacing)) text += "comment " + comment + "\n";
+  text += "element vertex " + std::to_string(points.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
   if (with_normals) text += "property double nx\nproperty double ny\nproperty double nz\n";
   text += "end_header\n";
   out.write(text);

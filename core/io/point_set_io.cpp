@@ -103,14 +103,17 @@ void write_atomically(const std::string& path, WriteBody&& write_body) {
   }
 }
 
-void write_3d(const std::string& path, const PointSet<3>& points, int dimension, PointFileFormat format) {
+void write_3d(const std::string& path, const PointSet<3>& points, int dimension, PointFileFormat format,
+              double spacing) {
   bool with_normals = false;
   check_writable(points, path, with_normals);
+  if (!std::isfinite(spacing) || spacing < 0.0)
+    throw std::invalid_argument("cannot write " + path + ": the spacing to record is " + shortest(spacing));
   write_atomically(path, [&](detail::FileSink& sink) {
     if (format == PointFileFormat::xyz) {
-      detail::write_xyz(sink, points, dimension, with_normals);
+      detail::write_xyz(sink, points, dimension, with_normals, spacing);
     } else {
-      detail::write_ply(sink, points, dimension, with_normals, format);
+      detail::write_ply(sink, points, dimension, with_normals, spacing, format);
     }
   });
 }
@@ -166,6 +169,7 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
   loaded.dimension = decide_dimension(raw, dimension_override);
   detail::repair_points(raw, loaded.dimension, std::move(unusable_normals));
   loaded.has_normals = raw.has_normals;
+  loaded.spacing = raw.declared_spacing;
   loaded.points = std::move(raw.points);
   if (!loaded.has_normals) std::fill(loaded.points.normals.begin(), loaded.points.normals.end(), Vec<3>::Zero());
   loaded.warnings = std::move(raw.warnings);
@@ -194,12 +198,12 @@ PointSet<3> to_3d(const PointSet<2>& points) {
   return out;
 }
 
-void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format) {
-  write_3d(path, to_3d(points), 2, format);
+void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format, double spacing) {
+  write_3d(path, to_3d(points), 2, format, spacing);
 }
 
-void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format) {
-  write_3d(path, points, 3, format);
+void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format, double spacing) {
+  write_3d(path, points, 3, format, spacing);
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

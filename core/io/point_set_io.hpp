@@ -20,6 +20,9 @@
 //   file's `amls dim N` comment (`comment amls dim 2` in PLY, `# amls dim 2` in
 //   text) or, in text, columns without z; else 2 if every z (and every nz) is
 //   0, with a warning; else 3. A set read as 2D must have z = 0 and nz = 0.
+// - The spacing: a comment `amls spacing H` (`comment amls spacing 0.01` in
+//   PLY, `# amls spacing 0.01` in text) says the points were made on a grid of
+//   spacing H; the rule that chooses h takes it (core/geometry/sample_spacing.hpp).
 // - Normals of length 1 within 1e-12 are kept bit for bit (so that round trips
 //   are exact); others are normalised (a warning says so when some were off by
 //   more than 1e-4, i.e. were not unit normals stored in float).
@@ -39,6 +42,8 @@
 //   that reads back as the same double: every round trip is bit-exact.
 // - 2D sets are written with z = 0, nz = 0 and an `amls dim 2` comment; 3D sets
 //   carry `amls dim 3`, so that a flat 3D set stays 3D when read back.
+// - Given the grid spacing h the points were made at, an `amls spacing h`
+//   comment records it, so that reading them back chooses the same h.
 // - Normals are written unless the set has none (an empty normal array, or all
 //   normals zero as read from a file without normals).
 // - The file is written to a temporary file in the same directory and renamed
@@ -68,6 +73,8 @@ struct LoadedPointSet {
   PointSet<3> points;
   // false: the file had no normals (or only zero ones) and every normal is zero.
   bool has_normals = false;
+  // The grid spacing the file says its points were made at (`amls spacing`); 0 if it does not say.
+  double spacing = 0.0;
   // Things the caller should tell the user (each names the file).
   std::vector<std::string> warnings;
 };
@@ -100,11 +107,15 @@ std::vector<Vec<D>> from_3d(const std::vector<Vec<3>>& vectors) {
   return out;
 }
 
-// Throws std::invalid_argument for non-finite values, a normal array of
-// another size than the positions, or a zero normal among non-zero ones; and
-// std::runtime_error naming `path` when the file cannot be written.
-void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format);
-void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format);
+// `spacing` > 0: the grid spacing h the points were made at, recorded as
+// `amls spacing h`. Throws std::invalid_argument for non-finite values, a
+// normal array of another size than the positions, a zero normal among
+// non-zero ones, or a non-finite spacing; and std::runtime_error naming
+// `path` when the file cannot be written.
+void write_point_set(const std::string& path, const PointSet<2>& points, PointFileFormat format,
+                     double spacing = 0.0);
+void write_point_set(const std::string& path, const PointSet<3>& points, PointFileFormat format,
+                     double spacing = 0.0);
 
 // Writes `text` to `path` the same way: through a temporary file renamed over it.
 void write_text_file(const std::string& path, const std::string& text);

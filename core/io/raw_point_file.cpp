@@ -3,6 +3,7 @@
 #include <array>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <utility>
@@ -104,10 +105,27 @@ std::optional<std::int64_t> parse_integer(std::string_view word) {
   return value;
 }
 
-int parse_dimension_comment(std::span<const std::string_view> words, const std::string& path, std::size_t line_number) {
-  if (words.size() < 2 || words[0] != "amls" || words[1] != "dim") return 0;
-  if (words.size() == 3 && (words[2] == "2" || words[2] == "3")) return words[2] == "2" ? 2 : 3;
-  fail(path, "line " + std::to_string(line_number) + ": expected 'amls dim 2' or 'amls dim 3'");
+void AmlsComments::note(std::span<const std::string_view> words, const std::string& path, std::size_t line_number) {
+  if (words.size() < 2 || words[0] != "amls") return;
+  auto fail_here = [&](const std::string& what) { fail(path, "line " + std::to_string(line_number) + ": " + what); };
+  if (words[1] == "dim") {
+    if (words.size() != 3 || (words[2] != "2" && words[2] != "3")) fail_here("expected 'amls dim 2' or 'amls dim 3'");
+    const int declared = words[2] == "2" ? 2 : 3;
+    if (dimension != 0 && declared != dimension) fail_here("conflicting 'amls dim' comments");
+    dimension = declared;
+  } else if (words[1] == "spacing") {
+    const std::optional<double> value = words.size() == 3 ? parse_double(words[2]) : std::nullopt;
+    if (!value || !(*value > 0.0) || !std::isfinite(*value))
+      fail_here("expected 'amls spacing H' with H a positive number");
+    if (spacing != 0.0 && *value != spacing) fail_here("conflicting 'amls spacing' comments");
+    spacing = *value;
+  }
+}
+
+std::vector<std::string> amls_comment_lines(int dimension, double spacing) {
+  std::vector<std::string> lines{"amls dim " + std::to_string(dimension)};
+  if (spacing > 0.0) lines.push_back("amls spacing " + shortest(spacing));
+  return lines;
 }
 
 void append_double(std::string& out, double value) {

@@ -31,6 +31,8 @@ struct RawPointFile {
   bool has_normals = false;
   // From an `amls dim N` comment (or, in XYZ, 2 or 4 columns); 0 if the file does not say.
   int declared_dimension = 0;
+  // From an `amls spacing H` comment; 0 if the file does not say.
+  double declared_spacing = 0.0;
   // For text formats, the line each point came from, so that messages can name it.
   std::vector<std::size_t> lines;
   // For binary files once points were dropped or merged, each point's vertex
@@ -78,9 +80,16 @@ void split_words(std::string_view text, std::vector<std::string_view>& words);
 std::optional<double> parse_double(std::string_view word);
 std::optional<std::int64_t> parse_integer(std::string_view word);
 
-// The N of a comment `amls dim N` (given the comment's words after `comment`
-// or `#`), 0 if the comment is anything else; throws unless N is 2 or 3.
-int parse_dimension_comment(std::span<const std::string_view> words, const std::string& path, std::size_t line_number);
+// What a file's `amls` comments declare: `amls dim N` (N = 2 or 3) and
+// `amls spacing H` (the grid spacing h its points were made at, H > 0).
+struct AmlsComments {
+  int dimension = 0;     // 0: not declared
+  double spacing = 0.0;  // 0: not declared
+  // Notes one comment, given its words after `comment` or `#`; any other
+  // comment is ignored. Throws naming the line for a malformed `amls dim` or
+  // `amls spacing` comment, or one that contradicts an earlier one.
+  void note(std::span<const std::string_view> words, const std::string& path, std::size_t line_number);
+};
 
 // Appends the shortest decimal that reads back as exactly `value`.
 void append_double(std::string& out, double value);
@@ -113,8 +122,14 @@ RawPointFile read_off(std::istream& in, std::uint64_t file_size, const std::stri
 std::uint64_t ply_face_count(std::istream& in, const std::string& path);
 std::uint64_t off_face_count(std::istream& in, std::uint64_t file_size, const std::string& path);
 
-// `points` holds a 2D set as z = 0; `with_normals` says whether to write normals.
-void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, PointFileFormat format);
-void write_xyz(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals);
+// `points` holds a 2D set as z = 0; `with_normals` says whether to write
+// normals; `spacing` > 0 is written as an `amls spacing` comment.
+void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, double spacing,
+               PointFileFormat format);
+void write_xyz(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, double spacing);
+
+// The `amls` comments a written file starts with, without the comment marker:
+// {"amls dim 3", "amls spacing 0.01"}.
+std::vector<std::string> amls_comment_lines(int dimension, double spacing);
 
 }  // namespace amls::detail

@@ -11,8 +11,7 @@ namespace amls {
 namespace {
 
 template <int D>
-NormalEstimation estimate_in(PointSet<3>& points, double radius, int threads) {
-  ThreadPool pool(threads);
+NormalEstimation estimate_in(PointSet<3>& points, double radius, ThreadPool& pool) {
   if constexpr (D == 2) {
     PointSet<2> flat = to_2d(points);
     NormalEstimation report = estimate_normals<2>(flat, radius, pool);
@@ -41,6 +40,11 @@ SurfaceInput read_surface_input(const std::string& path, int dimension) {
 }
 
 SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options) {
+  ThreadPool pool(options.threads);
+  return surface_samples(std::move(input), options, pool);
+}
+
+SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options, ThreadPool& pool) {
   const std::string& path = input.path;
   SurfaceSamples out;
   if (input.is_mesh) {
@@ -78,8 +82,8 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
   }
   NormalEstimation report;
   try {
-    report = out.dimension == 2 ? estimate_in<2>(out.points, options.normal_radius, options.threads)
-                                : estimate_in<3>(out.points, options.normal_radius, options.threads);
+    report = out.dimension == 2 ? estimate_in<2>(out.points, options.normal_radius, pool)
+                                : estimate_in<3>(out.points, options.normal_radius, pool);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": cannot estimate normals: " + e.what());
   }

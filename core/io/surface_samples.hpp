@@ -10,6 +10,7 @@
 #include "core/geometry/point_set.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/util/thread_pool.hpp"
 
 namespace amls {
 
@@ -17,7 +18,7 @@ struct SurfaceSampleOptions {
   double spacing = 0.0;        // meshes: sample spacing (> 0)
   double normal_radius = 0.0;  // point sets without normals: the fit radius (> 0), e.g. Delta
   int dimension = 0;           // point sets: 0 decides from the file, 2 or 3 forces it
-  int threads = 1;
+  int threads = 1;             // the overloads without a pool
 };
 
 struct SurfaceSamples {
@@ -36,6 +37,8 @@ struct SurfaceInput {
   int dimension() const { return is_mesh ? 3 : point_set.dimension; }
   // The positions a spacing is measured on: a mesh's vertices, a point set's points.
   const std::vector<Vec<3>>& positions() const { return is_mesh ? mesh.vertices : point_set.points.positions; }
+  // The grid spacing the file records (`amls spacing`, point sets only); 0 if none.
+  double recorded_spacing() const { return is_mesh ? 0.0 : point_set.spacing; }
 };
 
 // Reads `path` (dimension: 0 decides from the file, 2 or 3 forces it).
@@ -46,7 +49,9 @@ SurfaceInput read_surface_input(const std::string& path, int dimension);
 // The samples of a shape read by read_surface_input(), which it takes over
 // (options.dimension is the input's). Throws std::runtime_error naming the
 // file for a mesh with no triangle of positive area, or normals that cannot
-// be estimated.
+// be estimated. Normals are estimated on `pool` (its cancel check stops them
+// with Cancelled); the overload without one makes a pool of options.threads.
+SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options, ThreadPool& pool);
 SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options);
 
 // read_surface_input() then surface_samples().

@@ -109,7 +109,7 @@ RawPointFile read_xyz(std::istream& in, const std::string& path) {
   std::optional<Columns> columns;  // fixed by the header or the first line of numbers
   std::size_t columns_line = 0;
   char separator = ' ';
-  int comment_dimension = 0;
+  AmlsComments declared;
   for (std::size_t number = 1; read_line(in, line, kMaxLine, path, number); ++number) {
     auto fail_here = [&](const std::string& what) { fail(path, "line " + std::to_string(number) + ": " + what); };
     if (number == 1) drop_byte_order_mark(line);
@@ -118,10 +118,7 @@ RawPointFile read_xyz(std::istream& in, const std::string& path) {
     if (text.front() == '#') {
       // "#amls dim 2" and "# amls dim 2" alike.
       split_words(text.substr(1), fields);
-      const int dimension = parse_dimension_comment(fields, path, number);
-      if (dimension != 0 && comment_dimension != 0 && dimension != comment_dimension)
-        fail_here("conflicting 'amls dim' comments");
-      if (dimension != 0) comment_dimension = dimension;
+      declared.note(fields, path, number);
       continue;
     }
     if (!columns)
@@ -152,15 +149,16 @@ RawPointFile read_xyz(std::istream& in, const std::string& path) {
   }
   raw.has_normals = columns && columns->has_normals();
   const bool column_2d = columns && columns->is_2d();
-  if (column_2d && comment_dimension == 3)
+  if (column_2d && declared.dimension == 3)
     fail(path, "line " + std::to_string(columns_line) +
                    ": the columns make 2D points (no z), but the file says 'amls dim 3'");
-  raw.declared_dimension = column_2d ? 2 : comment_dimension;
+  raw.declared_dimension = column_2d ? 2 : declared.dimension;
+  raw.declared_spacing = declared.spacing;
   return raw;
 }
 
-void write_xyz(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals) {
-  out.write("# amls dim " + std::to_string(dimension) + "\n");
+void write_xyz(FileSink& out, const PointSet<3>& points, int dimension, bool with_normals, double spacing) {
+  for (const std::string& comment : amls_comment_lines(dimension, spacing)) out.write("# " + comment + "\n");
   std::string text;
   for (std::size_t i = 0; i < points.size(); ++i) {
     text.clear();

@@ -68,7 +68,7 @@ SpacingChoice choose_spacing(const std::vector<Vec<D>>& positions, const PointSe
     return {longest / options.grid, "--grid " + std::to_string(options.grid) +
                                         " across the bounding box's longest side (" + number(longest) + ")"};
   }
-  const SampleSpacing measured = sample_spacing<D>(positions);
+  const SampleSpacing measured = sample_spacing<D>(positions, options.recorded_spacing);
   return {measured.h, measured.explanation()};
 }
 

@@ -24,7 +24,9 @@ struct PointSetResampling {
   // h, by the first that is set:
   double spacing = 0.0;  // h itself, when positive
   int grid = 0;          // N cells: h = 1/N for points within the unit box, else the bounding box's longest side / N
-  // neither: h from the points' own spacing (core/geometry/sample_spacing.hpp)
+  // neither: h by the rule of core/geometry/sample_spacing.hpp, which takes
+  // first the spacing the input file records (`amls spacing`, 0: none)
+  double recorded_spacing = 0.0;
   double radius_factor = 3.0;
   // Each point's own support, wider where the input is sparse
   // (AmlsParameters::widen_support): `amls resample` turns it on unless

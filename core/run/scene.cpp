@@ -16,6 +16,7 @@
 #include "core/io/mesh_io.hpp"
 #include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/io/surface_samples.hpp"
 #include "core/util/parameter_ranges.hpp"
 
 namespace amls {
@@ -331,17 +332,12 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at) {
 }
 
 // h for a file shape without a grid: the rule of core/geometry/sample_spacing.hpp
-// on the file's points (a mesh's vertices).
+// on the file's points (a mesh's vertices), as `amls resample` and the editor choose it.
 template <int D>
 double spacing_of_file(const std::string& file, const Place& at) {
-  std::vector<Vec<D>> positions;
   try {
-    if (is_mesh_file(file)) {
-      for (const Vec<3>& v : read_mesh(file).vertices) positions.push_back(v.template head<D>());
-    } else {
-      for (const Vec<3>& p : read_point_set(file, D).points.positions) positions.push_back(p.template head<D>());
-    }
-    return sample_spacing<D>(positions).h;
+    const SurfaceInput input = read_surface_input(file, D);
+    return sample_spacing<D>(from_3d<D>(input.positions()), input.recorded_spacing()).h;
   } catch (const std::exception& e) {
     at.fail(std::string("no 'grid' given, and h cannot be measured on the file: ") + e.what());
   }

@@ -23,6 +23,11 @@ template <int D>
 constexpr std::size_t kGraphNeighbours = D == 2 ? 4 : 10;
 // Tree edges with |n_i . n_j| below this (about 72 degrees) carry the sign unreliably.
 constexpr double kAmbiguousDot = 0.3;
+// A part whose normals lean away from (or toward) its centroid by at least this
+// much (the mean of n . (p - c) over the mean |p - c|) has a side to take: 3/4 of
+// a cap's half angle in radians, so a cap from about 1.5 degrees on; a plane's
+// noise stays far below it (docs/real-data.md).
+constexpr double kSideLean = 0.02;
 
 // The direction of least spread of `neighbours` about their centroid.
 template <int D>
@@ -151,9 +156,30 @@ std::vector<std::vector<std::uint32_t>> symmetric(const std::vector<std::vector<
   return adjacent;
 }
 
+// How far the normals of `part` lean away from its centroid: the mean of
+// n . (p - c) over the mean |p - c|; 1 on a sphere with outward normals, about
+// 3/4 of the half angle on a cap, 0 on a plane.
+template <int D>
+double lean_from_centroid(const PointSet<D>& points, const std::vector<Vec<D>>& normals,
+                          const std::vector<std::uint32_t>& part) {
+  Vec<D> centroid = Vec<D>::Zero();
+  for (std::uint32_t i : part) centroid += points.positions[i];
+  centroid /= static_cast<double>(part.size());
+  double along = 0.0, distance = 0.0;
+  for (std::uint32_t i : part) {
+    const Vec<D> offset = points.positions[i] - centroid;
+    along += normals[i].dot(offset);
+    distance += offset.norm();
+  }
+  return distance > 0.0 ? along / distance : 0.0;
+}
+
 // Orients `normals` along Prim's minimum spanning tree of the graph (weights
-// 1 - |n_i . n_j|), from each part's highest point, whose normal points up.
-// Counts the parts and the ambiguous tree edges in `report`.
+// 1 - |n_i . n_j|), from each part's highest point, whose normal points up;
+// then turns a part whose normals lean toward its centroid by kSideLean or
+// more (a bowl's, whose highest points are on its rim) to lean away: outward
+// for a closed surface, whose n . (p - c) sums to 3 times its volume, and the
+// convex side of an open one. Counts the parts and the ambiguous tree edges in `report`.
 template <int D>
 void orient_along_tree(const PointSet<D>& points, const std::vector<std::vector<std::uint32_t>>& adjacent,
                        std::vector<Vec<D>>& normals, NormalEstimation& report) {
@@ -167,16 +193,19 @@ void orient_along_tree(const PointSet<D>& points, const std::vector<std::vector<
   std::vector<char> done(n, 0);
   using Edge = std::tuple<double, std::uint32_t, std::uint32_t>;  // weight, to, from
   std::priority_queue<Edge, std::vector<Edge>, std::greater<Edge>> frontier;
+  std::vector<std::uint32_t> part;
   for (std::size_t seed : order) {
     if (done[seed]) continue;
     ++report.components;
     if (normals[seed][D - 1] < 0.0) normals[seed] = -normals[seed];
     frontier.emplace(0.0, static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed));
+    part.clear();
     while (!frontier.empty()) {
       const auto [weight, j, i] = frontier.top();
       frontier.pop();
       if (done[j]) continue;
       done[j] = 1;
+      part.push_back(j);
       if (j != i) {
         const double dot = normals[i].dot(normals[j]);
         if (dot < 0.0) normals[j] = -normals[j];
@@ -185,6 +214,10 @@ void orient_along_tree(const PointSet<D>& points, const std::vector<std::vector<
       for (std::uint32_t k : adjacent[j])
         if (!done[k]) frontier.emplace(1.0 - std::abs(normals[j].dot(normals[k])), k, j);
     }
+    if (lean_from_centroid(points, normals, part) <= -kSideLean) {
+      for (std::uint32_t i : part) normals[i] = -normals[i];
+      ++report.turned_parts;
+    }
   }
 }
 
@@ -192,8 +225,8 @@ template <int D>
 void add_warnings(const PointSet<D>& points, double widest, NormalEstimation& report) {
   if (report.components > 1)
     report.warnings.push_back("the points fall into " + std::to_string(report.components) +
-                              " separate parts (no neighbours between them); each part was oriented from its "
-                              "highest point, outward there - check parts that lie inside others");
+                              " separate parts (no neighbours between them); each part was oriented on its own, "
+                              "away from its centroid (up, for a flat part) - check parts that lie inside others");
   if (report.ambiguous_edges > 0)
     report.warnings.push_back(std::to_string(report.ambiguous_edges) +
                               " steps of the orientation tree join normals more than 72 degrees apart, so the "

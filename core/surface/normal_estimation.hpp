@@ -11,7 +11,11 @@
 // grown from a seed whose orientation is known - the point with the largest
 // last coordinate (z, or y in 2D), whose outward normal points up - and each
 // point takes the sign that agrees with its parent. Each connected part of the
-// graph is seeded on its own.
+// graph is seeded on its own. Then each part takes the side away from its
+// centroid, where its normals lean clearly one way (the mean of n . (p - c) at
+// least 2 % of the mean |p - c|): outward for a closed surface, the convex side
+// of an open one (a bowl's, whose highest points are on its rim, where "up"
+// says little); a flat part keeps "up".
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,6 +32,7 @@ struct NormalEstimation {
   std::size_t components = 0;       // connected parts of the neighbour graph
   std::size_t ambiguous_edges = 0;  // tree edges whose normals are more than ~72 degrees apart
   std::size_t first_ambiguous = 0; // a point at one of them (valid if ambiguous_edges > 0)
+  std::size_t turned_parts = 0;     // parts turned over to lean away from their centroids
   // What the user should hear about: separate parts, ambiguous edges, failed fits.
   std::vector<std::string> warnings;
 };

@@ -1,0 +1,63 @@
+#include "core/run/shape_opening.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+#include "core/geometry/sample_spacing.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/io/surface_samples.hpp"
+
+namespace amls {
+
+namespace {
+
+// h for the file as read, and the cost of a resampling at it.
+template <int D>
+SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& given) {
+  const std::vector<Vec<D>> positions = from_3d<D>(input.positions());
+  PointSetResampling options = given;
+  options.recorded_spacing = input.recorded_spacing();
+  SpacingChoice choice;
+  try {
+    choice = choose_spacing(positions, options);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
+  }
+  if (positions.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
+    try {
+      check_resampling_cost(D, sampled_extent(positions), choice.h, options);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(input.path + ": " + e.what());
+    }
+  }
+  return choice;
+}
+
+}  // namespace
+
+OpenedShape open_shape_file(const std::string& path, const ShapeOpening& options, ThreadPool& pool) {
+  auto step = [&](const char* name, int index) {
+    pool.poll_cancel();
+    if (options.step) options.step(name, index, kShapeOpeningSteps);
+  };
+  step("reading the file", 0);
+  SurfaceInput input = read_surface_input(path, options.dimension);
+  OpenedShape out;
+  out.file_points = input.positions().size();
+  out.dimension = input.dimension();
+  step("choosing h", 1);
+  out.spacing = out.dimension == 2 ? spacing_for<2>(input, options.resampling) : spacing_for<3>(input, options.resampling);
+  const bool estimating = !input.is_mesh && !input.point_set.has_normals;
+  step(input.is_mesh ? "sampling the mesh" : estimating ? "estimating normals" : "checking the normals", 2);
+  SurfaceSampleOptions sampling;
+  sampling.spacing = out.spacing.h;
+  sampling.normal_radius = options.resampling.radius_factor * out.spacing.h;
+  sampling.dimension = out.dimension;
+  SurfaceSamples samples = surface_samples(std::move(input), sampling, pool);
+  out.points = std::move(samples.points);
+  out.source = std::move(samples.source);
+  out.warnings = std::move(samples.warnings);
+  return out;
+}
+
+}  // namespace amls

@@ -1,0 +1,103 @@
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/geometry/shapes.hpp"
+#include "core/io/point_set_io.hpp"
+#include "core/run/shape_opening.hpp"
+#include "tests/temp_dir.hpp"
+
+using namespace amls;
+using amls::test::TempDir;
+
+namespace {
+
+// The samples of a unit sphere with z on the given side of `cut` (above: a cap; below: a bowl).
+PointSet<3> sphere_part(std::size_t sphere_points, double cut, bool above) {
+  const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, sphere_points);
+  PointSet<3> part;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+    if ((sphere.positions[i].z() > cut) == above) part.add(sphere.positions[i], sphere.normals[i]);
+  return part;
+}
+
+// `points` without their normals, written as text columns x y z.
+void write_bare(const std::string& path, const PointSet<3>& points) {
+  PointSet<3> bare = points;
+  bare.normals.clear();
+  write_point_set(path, bare, PointFileFormat::xyz);
+}
+
+// How many of `opened`'s normals point the other way from `exact`'s.
+std::size_t flipped(const PointSet<3>& opened, const PointSet<3>& exact) {
+  REQUIRE(opened.size() == exact.size());
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i) count += opened.normals[i].dot(exact.normals[i]) < 0.5 ? 1 : 0;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("opening a scan without normals: normals estimated and oriented outward, h as amls resample chooses it") {
+  TempDir dir;
+  ThreadPool pool(2);
+  // A cap's highest point is inside it, a bowl's on its rim: both come out on the convex side.
+  for (const bool above : {true, false}) {
+    CAPTURE(above);
+    const PointSet<3> exact = sphere_part(8000, above ? 0.3 : -0.3, above);
+    const std::string path = dir.file(above ? "cap.xyz" : "bowl.xyz");
+    write_bare(path, exact);
+    std::vector<std::string> steps;
+    ShapeOpening options;
+    options.step = [&](const char* name, int index, int count) {
+      CHECK(index == static_cast<int>(steps.size()));
+      CHECK(count == kShapeOpeningSteps);
+      steps.push_back(name);
+    };
+    const OpenedShape opened = open_shape_file(path, options, pool);
+    CHECK(steps == std::vector<std::string>{"reading the file", "choosing h", "estimating normals"});
+    CHECK(opened.dimension == 3);
+    CHECK(opened.file_points == exact.size());
+    CHECK(opened.source.find("normals estimated") != std::string::npos);
+    CHECK(flipped(opened.points, exact) == 0);
+    // The command line's h: the rule on the file's points.
+    const SpacingChoice rule = choose_spacing(exact.positions, PointSetResampling{});
+    CHECK(opened.spacing.h == rule.h);
+    CHECK(opened.spacing.reason == rule.reason);
+  }
+}
+
+TEST_CASE("opening a file: a given spacing wins, a recorded one comes next, and the cost is checked") {
+  TempDir dir;
+  ThreadPool pool(1);
+  const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, 2000);
+  const std::string path = dir.file("s.ply");
+  write_point_set(path, sphere, PointFileFormat::ply_binary_little_endian, 0.07);
+  ShapeOpening options;
+  CHECK(open_shape_file(path, options, pool).spacing.h == 0.07);
+  CHECK(open_shape_file(path, options, pool).spacing.reason.find("records") != std::string::npos);
+  options.resampling.spacing = 0.1;
+  const OpenedShape given = open_shape_file(path, options, pool);
+  CHECK(given.spacing.h == 0.1);
+  CHECK(given.source.find("with normals") != std::string::npos);
+  options.resampling.spacing = 1e-6;
+  CHECK_THROWS_WITH_AS(open_shape_file(path, options, pool), doctest::Contains("s.ply: h = 1e-06 would give about"),
+                       std::runtime_error);
+  options.resampling.spacing = 0.0;
+  write_point_set(dir.file("few.xyz"), sample_sphere(Vec<3>::Zero(), 1.0, 4), PointFileFormat::xyz);
+  CHECK_THROWS_WITH_AS(open_shape_file(dir.file("few.xyz"), options, pool),
+                       doctest::Contains("few.xyz: cannot choose h: measuring the spacing needs more than 4 points"),
+                       std::runtime_error);
+}
+
+TEST_CASE("opening a file stops when the pool's check says so") {
+  TempDir dir;
+  write_bare(dir.file("cap.xyz"), sphere_part(3000, 0.3, true));
+  ThreadPool pool(1);
+  int polls = 0;
+  // Stops at the third step: after reading and choosing h.
+  CancelScope stop(pool, [&] { return ++polls > 2; });
+  CHECK_THROWS_AS(open_shape_file(dir.file("cap.xyz"), ShapeOpening{}, pool), Cancelled);
+  CHECK(polls == 3);
+}
