@@ -11,7 +11,7 @@ using namespace amls::editor;
 
 namespace {
 
-command::MoveHandles move_to(double x) { return command::MoveHandles{{Vec<3>(x, 0.0, 0.0)}}; }
+command::MoveHandles move_to(double x) { return command::MoveHandles{{Vec<3>(x, 0.0, 0.0)}, {}}; }
 
 double moved_x(const QueuedCommand& q) { return std::get<command::MoveHandles>(q.command).positions.at(0).x(); }
 

@@ -53,7 +53,7 @@ void drag(EditorWorker& worker, std::vector<Vec<3>> handles, std::size_t index, 
   const double x0 = handles[index].x();
   for (int k = 1; k <= moves; ++k) {
     handles[index].x() = x0 + dx * k / moves;
-    worker.post(command::MoveHandles{handles});
+    worker.post(command::MoveHandles{handles, {}});
   }
 }
 
@@ -463,7 +463,7 @@ TEST_CASE("a move's snapshot comes before its spacing is measured, which follows
     std::lock_guard lock(mutex);
     published.clear();
   }
-  const std::uint64_t move = worker.post(command::MoveHandles{{Vec<3>(0.2, 0, 1)}});
+  const std::uint64_t move = worker.post(command::MoveHandles{{Vec<3>(0.2, 0, 1)}, {}});
   REQUIRE(worker.wait_until_idle(kPatience));
   std::vector<std::shared_ptr<const Snapshot>> seen;
   {

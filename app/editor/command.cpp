@@ -31,6 +31,8 @@ const char* describe(const Command& c) {
           [](const LoadFile&) { return "loading"; }, [](const LoadShape&) { return "loading"; },
           [](const AddHandle&) { return "adding a handle"; }, [](const RemoveHandle&) { return "removing a handle"; },
           [](const BeginDrag&) { return "starting a drag"; }, [](const MoveHandles&) { return "deforming"; },
+          [](const AddRegion&) { return "adding a region"; }, [](const ReplaceRegion&) { return "changing a region"; },
+          [](const RemoveRegion&) { return "removing a region"; }, [](const PinRegion&) { return "pinning a region"; },
           [](const CancelDrag&) { return "cancelling the drag"; },
           [](const SetVariant&) { return "changing the variant"; }, [](const SetGrid&) { return "changing the grid"; },
           [](const SetDeformation&) { return "changing the MLS map"; },

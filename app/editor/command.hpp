@@ -28,8 +28,32 @@ struct RemoveHandle {
   std::size_t index = 0;
 };
 struct BeginDrag {};  // the state now is what Esc and undo go back to
+// A region handle's motion (core/geometry/region_motion.hpp) in 3D terms: in
+// 2D the translation's z and the rotation vector's x and y are 0.
+struct RegionMove {
+  Vec<3> translation = Vec<3>::Zero();
+  Vec<3> rotation = Vec<3>::Zero();
+  double scale = 1.0;
+};
 struct MoveHandles {  // every handle's new position; coalesced: the newest wins
   std::vector<Vec<3>> positions;
+  // Every region's motion; empty: the regions stay where they are.
+  std::vector<RegionMove> regions;
+};
+struct AddRegion {  // a region of these members (where the surface is now), pinned or not
+  std::vector<Vec<3>> members;
+  bool pinned = false;
+};
+struct ReplaceRegion {  // region `index` gets these members (where the surface is now) and starts at rest
+  std::size_t index = 0;
+  std::vector<Vec<3>> members;
+};
+struct RemoveRegion {
+  std::size_t index = 0;
+};
+struct PinRegion {
+  std::size_t index = 0;
+  bool pinned = true;
 };
 struct CancelDrag {};  // back to the state at BeginDrag
 struct SetVariant {
@@ -67,7 +91,8 @@ struct SaveScene {
 
 using Command =
     std::variant<command::LoadFile, command::LoadShape, command::AddHandle, command::RemoveHandle, command::BeginDrag,
-                 command::MoveHandles, command::CancelDrag, command::SetVariant, command::SetGrid,
+                 command::MoveHandles, command::AddRegion, command::ReplaceRegion, command::RemoveRegion,
+                 command::PinRegion, command::CancelDrag, command::SetVariant, command::SetGrid,
                  command::SetDeformation, command::SetResampling, command::SetCurveTracing, command::Undo,
                  command::Redo, command::Reset, command::Export, command::ExportMesh, command::SaveScene>;
 

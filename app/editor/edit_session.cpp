@@ -72,7 +72,7 @@ class Phases {
 template <int D>
 EditSession<D>::EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes)
     : threads_(threads),
-      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), shape.settings, {}, false,
+      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), {}, shape.settings, {}, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
       recording_(initial_.recording),
@@ -94,8 +94,9 @@ std::unique_ptr<DeformingSurface<D>> EditSession<D>::make_surface(const SurfaceS
 template <int D>
 typename EditSession<D>::State EditSession<D>::current_state() const {
   // The local loop's points in its own order, which its strain follows.
-  if (local_in_sync()) return State{local_->points(), handles_, settings_, local_->strain(), settled_, recording_};
-  return State{surface_->points(), handles_, settings_, {}, settled_, recording_};
+  if (local_in_sync())
+    return State{local_->points(), handles_, regions_, settings_, local_->strain(), settled_, recording_};
+  return State{surface_->points(), handles_, regions_, settings_, {}, settled_, recording_};
 }
 
 template <int D>
@@ -111,6 +112,7 @@ void EditSession<D>::restore(const State& state) {
   surface_behind_ = false;
   settings_ = next;
   handles_ = state.handles;
+  regions_ = state.regions;
   settled_ = state.settled;
   recording_ = state.recording;
   ++version_;
@@ -124,9 +126,11 @@ template <int D>
 std::size_t EditSession<D>::State::bytes() const {
   std::size_t total = sizeof(State) +
                       (points.positions.size() + points.normals.size() + handles.size()) * sizeof(Vec<D>) +
-                      strain.size() * sizeof(float);
+                      regions.size() * sizeof(RegionHandle<D>) + strain.size() * sizeof(float);
+  // The regions' members are shared among the states, and not counted.
   for (const RecordedStep<D>& step : recording.steps())
-    total += sizeof(step) + (step.from.size() + step.to.size()) * sizeof(Vec<D>);
+    total += sizeof(step) + (step.from.size() + step.to.size()) * sizeof(Vec<D>) +
+             (step.regions_from.size() + step.regions_to.size()) * sizeof(RegionHandle<D>);
   return total;
 }
 
@@ -203,6 +207,43 @@ void EditSession<D>::remove_handle(std::size_t index) {
 }
 
 template <int D>
+void EditSession<D>::add_region(std::vector<Vec<D>> members, double reach, bool pinned) {
+  auto region = std::make_shared<const PointRegion<D>>(std::move(members), reach);  // throws before any change
+  push_undo();
+  regions_.push_back(RegionHandle<D>{std::move(region), {}, pinned});
+}
+
+template <int D>
+void EditSession<D>::replace_region(std::size_t index, std::vector<Vec<D>> members) {
+  check_region(index);
+  auto region = std::make_shared<const PointRegion<D>>(std::move(members), regions_[index].region->reach());
+  push_undo();
+  regions_[index] = RegionHandle<D>{std::move(region), {}, regions_[index].pinned};
+}
+
+template <int D>
+void EditSession<D>::remove_region(std::size_t index) {
+  check_region(index);
+  push_undo();
+  regions_.erase(regions_.begin() + static_cast<std::ptrdiff_t>(index));
+}
+
+template <int D>
+void EditSession<D>::check_region(std::size_t index) const {
+  if (index >= regions_.size())
+    throw std::out_of_range("no region " + std::to_string(index) + " (there are " + std::to_string(regions_.size()) +
+                            ")");
+}
+
+template <int D>
+void EditSession<D>::set_region_pinned(std::size_t index, bool pinned) {
+  check_region(index);
+  if (regions_[index].pinned == pinned) return;
+  push_undo();
+  regions_[index].pinned = pinned;
+}
+
+template <int D>
 void EditSession<D>::begin_drag() {
   push_undo();
 }
@@ -234,18 +275,36 @@ bool EditSession<D>::map_exactly(const WorkControl& control) {
 
 template <int D>
 EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkControl& control) {
+  std::vector<RegionMotion<D>> motions;
+  for (const RegionHandle<D>& region : regions_) motions.push_back(region.motion);
+  return move_handles(std::move(to), motions, control);
+}
+
+template <int D>
+EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const std::vector<RegionMotion<D>>& motions,
+                                        const WorkControl& control) {
   if (to.size() != handles_.size())
     throw std::invalid_argument("moving " + std::to_string(to.size()) + " handles, but the session has " +
                                 std::to_string(handles_.size()));
+  if (motions.size() != regions_.size())
+    throw std::invalid_argument("moving " + std::to_string(motions.size()) + " regions, but the session has " +
+                                std::to_string(regions_.size()));
+  std::vector<RegionHandle<D>> regions_to = regions_;
+  for (std::size_t r = 0; r < motions.size(); ++r) {
+    if (regions_[r].pinned && !(motions[r] == regions_[r].motion))
+      throw std::invalid_argument("region " + std::to_string(r) + " is pinned and cannot move");
+    regions_to[r].motion = motions[r];
+  }
   EditResult result;
-  if (to == handles_) return result;
-  const MlsDeformation<D> deformation(handles_, to, settings_.kind, settings_.alpha);
+  if (to == handles_ && same_places(regions_to, regions_)) return result;
+  const MlsDeformation<D> deformation(handles_, to, regions_, regions_to, settings_.kind, settings_.alpha);
   if (points().empty()) {
     handles_ = std::move(to);
+    regions_ = std::move(regions_to);
     result.changed = true;
     return result;
   }
-  if (resamples_locally()) return move_handles_locally(deformation, std::move(to), control);
+  if (resamples_locally()) return move_handles_locally(deformation, std::move(to), std::move(regions_to), control);
   // As `amls deform`, where the policy decides before step k whether to
   // resample and once more after the last step: here the decision for the
   // points a step made is taken right after it (the step that follows, if
@@ -288,9 +347,10 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const WorkContro
     return result;
   }
   if (resampled_first) recording_.resampled(settings_);
-  recording_.deformed(handles_, to, settings_);
+  recording_.deformed(handles_, to, settings_, regions_, regions_to);
   if (resampled_after) recording_.resampled(settings_);
   handles_ = std::move(to);
+  regions_ = std::move(regions_to);
   settled_ = resample;
   ++version_;
   result.changed = result.stepped = true;
@@ -342,7 +402,7 @@ EditResult EditSession<D>::prepare_local(const WorkControl& control) {
 
 template <int D>
 EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
-                                                const WorkControl& control) {
+                                                std::vector<RegionHandle<D>> regions_to, const WorkControl& control) {
   // As `amls deform --resample local`: the points are resampled whole once
   // (the loaded shape, or points whose strain the loop does not know: after
   // resampling was off, or another policy), then each step maps them and
@@ -376,9 +436,10 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
     return result;
   }
   if (start) recording_.resampled(settings_);
-  recording_.deformed(handles_, to, settings_);
+  recording_.deformed(handles_, to, settings_, regions_, regions_to);
   surface_behind_ = true;
   handles_ = std::move(to);
+  regions_ = std::move(regions_to);
   settled_ = true;
   ++version_;
   local_version_ = version_;

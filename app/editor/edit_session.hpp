@@ -64,6 +64,7 @@ class EditSession {
   // In a fixed order for each version(): the local loop's while it holds them.
   const PointSet<D>& points() const { return local_in_sync() ? local_->points() : surface_->points(); }
   const std::vector<Vec<D>>& handles() const { return handles_; }
+  const std::vector<RegionHandle<D>>& regions() const { return regions_; }
   const SurfaceSettings& settings() const { return settings_; }
   const SessionRecording<D>& recording() const { return recording_; }
   const Grid<D>& grid() const { return surface_->surface().grid(); }
@@ -79,6 +80,14 @@ class EditSession {
   // Handles. Adding and removing make the state before them an undo point.
   void add_handle(const Vec<D>& position);
   void remove_handle(std::size_t index);  // throws std::out_of_range
+  // Region handles (core/deform/region_handle.hpp), likewise undoable: a new
+  // region of these members (positions where the region is now) and reach,
+  // at rest; one removed; one pinned or let go. Throw std::invalid_argument
+  // (a bad region) or std::out_of_range (no such region).
+  void add_region(std::vector<Vec<D>> members, double reach, bool pinned);
+  void replace_region(std::size_t index, std::vector<Vec<D>> members);  // its members edited: at rest again
+  void remove_region(std::size_t index);
+  void set_region_pinned(std::size_t index, bool pinned);
 
   // A drag: begin_drag() makes the current state an undo point; each
   // move_handles() is one step to the new positions (one per handle; throws
@@ -86,6 +95,10 @@ class EditSession {
   // undo point and drops it.
   void begin_drag();
   EditResult move_handles(std::vector<Vec<D>> to, const WorkControl& control);
+  // The same with the regions moved too, one motion per region (a pinned
+  // region's must stay its own; std::invalid_argument otherwise).
+  EditResult move_handles(std::vector<Vec<D>> to, const std::vector<RegionMotion<D>>& motions,
+                          const WorkControl& control);
   bool cancel_drag();
   // Under `local`, what the first step would do first, now: the points
   // resampled whole into the local loop (the worker calls it once it waits
@@ -119,6 +132,7 @@ class EditSession {
   struct State {
     PointSet<D> points;
     std::vector<Vec<D>> handles;
+    std::vector<RegionHandle<D>> regions;
     SurfaceSettings settings;  // only h, Delta / h and the variant are restored
     std::vector<float> strain;  // under `local`, each point's (empty otherwise)
     bool settled = false;
@@ -132,6 +146,8 @@ class EditSession {
   std::unique_ptr<DeformingSurface<D>> make_surface(const SurfaceSettings& settings) const;
   State current_state() const;
   void restore(const State& state);
+  // Throws std::out_of_range if there is no region `index`.
+  void check_region(std::size_t index) const;
   // Makes the current state an undo point, and forgets the redo states.
   void push_undo();
   // Appends to the undo states, dropping the oldest while they exceed the budget.
@@ -146,7 +162,7 @@ class EditSession {
   void start_local(EditResult& result);
   // A handle move under the `local` policy.
   EditResult move_handles_locally(const MlsDeformation<D>& deformation, std::vector<Vec<D>> to,
-                                  const WorkControl& control);
+                                  std::vector<RegionHandle<D>> regions_to, const WorkControl& control);
   // Whether steps resample under the `local` policy.
   bool resamples_locally() const {
     return settings_.resample && settings_.policy.kind == ResamplePolicy::Kind::local;
@@ -163,6 +179,7 @@ class EditSession {
   std::unique_ptr<LocalDeformingSurface<D>> local_;  // made by the first step under `local`, for this grid and variant
   std::uint64_t local_version_ = ~std::uint64_t{0};  // the version whose points local_ holds
   std::vector<Vec<D>> handles_;
+  std::vector<RegionHandle<D>> regions_;
   SurfaceSettings settings_;
   // The resample policy has had its say on the points: they are a resample's,
   // or a step's that the policy chose not to resample. Only the initial points

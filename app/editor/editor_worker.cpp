@@ -302,13 +302,34 @@ void EditorWorker::execute(const QueuedCommand& queued) {
           [&](const MoveHandles& c) {
             on_session([&](auto& s) {
               constexpr int D = std::decay_t<decltype(s)>::dimension;
-              if (c.positions.size() != s.handles().size()) {
+              if (c.positions.size() != s.handles().size() ||
+                  (!c.regions.empty() && c.regions.size() != s.regions().size())) {
                 message(Message::Level::warning, "A handle move was dropped: the handles changed meanwhile");
                 return;
               }
-              note_result(s.move_handles(from_3d<D>(c.positions), control));
+              if (c.regions.empty()) {
+                note_result(s.move_handles(from_3d<D>(c.positions), control));
+                return;
+              }
+              std::vector<RegionMotion<D>> motions;
+              for (const RegionMove& move : c.regions) motions.push_back(motion_from<D>(move));
+              note_result(s.move_handles(from_3d<D>(c.positions), motions, control));
             });
           },
+          [&](const AddRegion& c) {
+            on_session([&](auto& s) {
+              constexpr int D = std::decay_t<decltype(s)>::dimension;
+              s.add_region(from_3d<D>(c.members), s.settings().spacing, c.pinned);
+            });
+          },
+          [&](const ReplaceRegion& c) {
+            on_session([&](auto& s) {
+              constexpr int D = std::decay_t<decltype(s)>::dimension;
+              s.replace_region(c.index, from_3d<D>(c.members));
+            });
+          },
+          [&](const RemoveRegion& c) { on_session([&](auto& s) { s.remove_region(c.index); }); },
+          [&](const PinRegion& c) { on_session([&](auto& s) { s.set_region_pinned(c.index, c.pinned); }); },
           [&](const CancelDrag&) { on_session([&](auto& s) { s.cancel_drag(); }); },
           [&](const SetVariant& c) { on_session([&](auto& s) { note_result(s.set_variant(c.variant, control)); }); },
           [&](const SetGrid& c) {
@@ -357,6 +378,7 @@ void EditorWorker::publish(std::uint64_t processed) {
                           snapshot->settings = s.settings();
                           snapshot->grid_origin = to_3d_vector<D>(s.grid().origin());
                           for (const Vec<D>& h : s.handles()) snapshot->handles.push_back(to_3d_vector<D>(h));
+                          for (const RegionHandle<D>& r : s.regions()) snapshot->regions.push_back(view_of<D>(r));
                           snapshot->can_undo = s.can_undo();
                           snapshot->can_redo = s.can_redo();
                           snapshot->recorded_steps = s.recording().steps().size();

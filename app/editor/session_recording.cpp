@@ -55,7 +55,8 @@ void SessionRecording<D>::resampled(const SurfaceSettings& settings) {
 }
 
 template <int D>
-void SessionRecording<D>::deformed(std::vector<Vec<D>> from, std::vector<Vec<D>> to, const SurfaceSettings& settings) {
+void SessionRecording<D>::deformed(std::vector<Vec<D>> from, std::vector<Vec<D>> to, const SurfaceSettings& settings,
+                                   std::vector<RegionHandle<D>> regions_from, std::vector<RegionHandle<D>> regions_to) {
   if (steps_.empty()) {
     settings_.kind = settings.kind;
     settings_.alpha = settings.alpha;
@@ -70,17 +71,24 @@ void SessionRecording<D>::deformed(std::vector<Vec<D>> from, std::vector<Vec<D>>
     spoil("resampling was switched off after resampled steps");
   if (mode_ == Mode::resampling && settings.resample && !(settings.policy == settings_.policy))
     spoil("the resample policy changed after the first step");
-  steps_.push_back(RecordedStep<D>{std::move(from), std::move(to)});
+  steps_.push_back(
+      RecordedStep<D>{std::move(from), std::move(to), std::move(regions_from), std::move(regions_to)});
   last_ = Op::deform;
 }
 
 template <int D>
 DeformationHistory<D> SessionRecording<D>::history() const {
   DeformationHistory<D> out;
+  const std::vector<RegionHandle<D>>* last_regions = nullptr;  // where the last step left the regions
   for (const RecordedStep<D>& step : steps_) {
-    const bool continues = !out.stages.empty() && out.stages.back().targets.back().handles == step.from;
-    if (!continues) out.begin_stage(step.from);
-    out.add_target(step.to, 1);
+    // Pinned or not is the stage's: a region pinned or let go starts one, as a region added or removed does.
+    const bool continues = !out.stages.empty() && out.stages.back().targets.back().handles == step.from &&
+                           *last_regions == step.regions_from;
+    if (!continues) out.begin_stage(step.from, step.regions_from);
+    std::vector<RegionMotion<D>> motions;
+    for (const RegionHandle<D>& region : step.regions_to) motions.push_back(region.motion);
+    out.add_target(step.to, 1, std::move(motions));
+    last_regions = &step.regions_to;
   }
   return out;
 }

@@ -30,6 +30,8 @@ template <int D>
 struct RecordedStep {
   std::vector<Vec<D>> from;  // the handles before the step
   std::vector<Vec<D>> to;    // and after it
+  std::vector<RegionHandle<D>> regions_from;  // the region handles before the step
+  std::vector<RegionHandle<D>> regions_to;    // and after it
 };
 
 template <int D>
@@ -41,9 +43,10 @@ class SessionRecording {
   SessionRecording restarted(const SurfaceSettings& settings) const;
 
   // The surface was resampled (R) with these settings, or deformed (D) by the
-  // MLS map taking handles `from` to `to`.
+  // MLS map taking handles `from` to `to` (and the regions `regions_from` to `regions_to`).
   void resampled(const SurfaceSettings& settings);
-  void deformed(std::vector<Vec<D>> from, std::vector<Vec<D>> to, const SurfaceSettings& settings);
+  void deformed(std::vector<Vec<D>> from, std::vector<Vec<D>> to, const SurfaceSettings& settings,
+                std::vector<RegionHandle<D>> regions_from = {}, std::vector<RegionHandle<D>> regions_to = {});
 
   const SceneShape<D>& shape() const { return shape_; }
   // The grid spacing h the initial points were sampled at.
@@ -57,7 +60,7 @@ class SessionRecording {
   // The steps as the scene format's stages, one step per target. Consecutive
   // steps whose handles continue each other share a stage; a step whose
   // handles differ from where the last one left them (a handle was added,
-  // removed or is new) starts a stage.
+  // removed or is new; a region was added, removed, pinned or let go) starts a stage.
   DeformationHistory<D> history() const;
 
   // Whether `amls deform` (with --no-resample if no_resample()) gives the

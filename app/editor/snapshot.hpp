@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/region_moves.hpp"
 #include "app/editor/surface_settings.hpp"
 #include "core/surface/curve_tracing.hpp"
 #include "core/run/deforming_surface.hpp"
@@ -45,6 +46,7 @@ struct Snapshot {
   static constexpr std::uint64_t kNotMeasured = ~std::uint64_t{0};
   std::uint64_t spacing_version = kNotMeasured;
   std::vector<Vec<3>> handles;      // 2D: z = 0
+  std::vector<RegionView> regions;  // the region handles
   std::vector<CurveSegment> curve;  // 2D: the MLS curve F = 0, when traced
   SurfaceSettings settings;
   Vec<3> grid_origin = Vec<3>::Zero();

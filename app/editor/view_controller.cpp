@@ -173,7 +173,7 @@ void ViewController::update(const Viewport& viewport, bool shift_down, bool curs
     if (shift_down && !hovered_)
       if (const std::optional<std::size_t> hit = pick_surface(cursor_, viewport)) preview_ = points_->positions[*hit];
   }
-  if (move_pending_ && drag_) post_(command::MoveHandles{handles_});
+  if (move_pending_ && drag_) post_(command::MoveHandles{handles_, {}});
   move_pending_ = false;
 }
 

@@ -205,24 +205,72 @@ MlsKind parse_mls_kind(const std::string& name) {
 
 template <int D>
 MlsDeformation<D>::MlsDeformation(std::vector<Vec<D>> from, std::vector<Vec<D>> to, MlsKind kind, double alpha)
-    : kind_(kind), alpha_(alpha) {
-  if (from.size() != to.size())
-    throw std::invalid_argument("MLS deformation: " + std::to_string(from.size()) + " handle start positions but " +
-                                std::to_string(to.size()) + " targets");
-  for (std::size_t i = 0; i < from.size(); ++i) {
-    if (!from[i].allFinite())
+    : MlsDeformation(std::move(from), std::move(to), {}, {}, kind, alpha) {}
+
+template <int D>
+MlsDeformation<D>::MlsDeformation(std::vector<Vec<D>> from, std::vector<Vec<D>> to,
+                                  std::vector<RegionHandle<D>> from_regions, std::vector<RegionHandle<D>> to_regions,
+                                  MlsKind kind, double alpha)
+    : from_(std::move(from)),
+      to_(std::move(to)),
+      from_regions_(std::move(from_regions)),
+      to_regions_(std::move(to_regions)),
+      kind_(kind),
+      alpha_(alpha) {
+  if (from_.size() != to_.size())
+    throw std::invalid_argument("MLS deformation: " + std::to_string(from_.size()) + " handle start positions but " +
+                                std::to_string(to_.size()) + " targets");
+  for (std::size_t i = 0; i < from_.size(); ++i) {
+    if (!from_[i].allFinite())
       throw std::invalid_argument("MLS deformation: handle " + std::to_string(i) + " has a non-finite start position");
-    if (!to[i].allFinite())
+    if (!to_[i].allFinite())
       throw std::invalid_argument("MLS deformation: handle " + std::to_string(i) + " has a non-finite target");
+  }
+  if (from_regions_.size() != to_regions_.size())
+    throw std::invalid_argument("MLS deformation: " + std::to_string(from_regions_.size()) + " regions at the start but " +
+                                std::to_string(to_regions_.size()) + " at the end");
+  for (std::size_t r = 0; r < from_regions_.size(); ++r) {
+    const std::string which = "MLS deformation: region " + std::to_string(r);
+    if (!from_regions_[r].region || from_regions_[r].region != to_regions_[r].region)
+      throw std::invalid_argument(which + " is missing or not the same region at the start and the end");
+    if (!from_regions_[r].motion.finite() || !to_regions_[r].motion.finite())
+      throw std::invalid_argument(which + " has a non-finite motion");
+    if (!(from_regions_[r].motion.scale > 0.0) || !(to_regions_[r].motion.scale > 0.0))
+      throw std::invalid_argument(which + " has a scale that is not > 0");
   }
   if (!(alpha > 0.0) || !std::isfinite(alpha))
     throw std::invalid_argument("MLS deformation: alpha must be a finite number > 0, got " + describe(alpha));
-  direct_ = make_handles(std::move(from), std::move(to));
+  direct_ = make_handles(from_, to_, from_regions_, to_regions_);
 }
 
 template <int D>
-typename MlsDeformation<D>::Handles MlsDeformation<D>::make_handles(std::vector<Vec<D>> p, std::vector<Vec<D>> q) {
-  Handles handles{std::move(p), std::move(q), 0.0};
+typename MlsDeformation<D>::Handles MlsDeformation<D>::make_handles(std::vector<Vec<D>> p, std::vector<Vec<D>> q,
+                                                                    const std::vector<RegionHandle<D>>& from,
+                                                                    const std::vector<RegionHandle<D>>& to) {
+  Handles handles{std::move(p), std::move(q), 0, {}, 0.0};
+  handles.points = handles.p.size();
+  for (std::size_t r = 0; r < from.size(); ++r) {
+    const PointRegion<D>& region = *from[r].region;
+    const Vec<D>& centre = region.centre();
+    const Mat<D> first = from[r].motion.linear(), second = to[r].motion.linear();
+    const Vec<D> first_offset = from[r].motion.offset(centre), second_offset = to[r].motion.offset(centre);
+    Region fit;
+    fit.region = &region;
+    fit.scale = from[r].motion.scale;
+    // first^{-1} = R^T / s for a rotation R scaled by s.
+    fit.to_rest = first.transpose() / (fit.scale * fit.scale);
+    fit.rest_offset = -fit.to_rest * first_offset;
+    fit.linear = second * fit.to_rest;
+    fit.offset = second * fit.rest_offset + second_offset;
+    handles.regions.push_back(fit);
+    // The centre and one point at the region's extent (at least its reach) along each axis.
+    const double arm = std::max(region.extent(), region.reach());
+    for (int a = -1; a < D; ++a) {
+      const Vec<D> rest = a < 0 ? centre : Vec<D>(centre + arm * Vec<D>::Unit(a));
+      handles.p.push_back(first * rest + first_offset);
+      handles.q.push_back(second * rest + second_offset);
+    }
+  }
   if (handles.p.empty()) return handles;
   Vec<D> low = handles.p.front(), high = low;
   for (const Vec<D>& x : handles.p) {
@@ -242,12 +290,27 @@ MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>&
   MlsLocalMap<D> local{v, Mat<D>::Identity(), false};
   if (n == 0) return local;
 
+  // A region's pairs all get its gap g squared: the distance from v to its
+  // members less its reach (at v's scale). Within reach v is on the region
+  // and moves with it.
+  for (std::size_t r = 0; r < handles.regions.size(); ++r) {
+    const Region& region = handles.regions[r];
+    const Vec<D> rest = region.to_rest * v + region.rest_offset;
+    const double gap = region.scale * (std::sqrt(region.region->squared_distance(rest)) - region.region->reach());
+    if (gap <= 0.0 || gap * gap <= handles.snap_squared) {
+      local.linear = region.linear;
+      local.position = region.linear * v + region.offset;
+      return local;
+    }
+    for (std::size_t k = 0; k < static_cast<std::size_t>(D + 1); ++k)
+      weights[handles.points + r * static_cast<std::size_t>(D + 1) + k] = gap * gap;
+  }
+
   // Squared distances first; the nearest handle decides whether v is on one.
   std::size_t nearest = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    weights[i] = (p[i] - v).squaredNorm();
+  for (std::size_t i = 0; i < handles.points; ++i) weights[i] = (p[i] - v).squaredNorm();
+  for (std::size_t i = 0; i < n; ++i)
     if (weights[i] < weights[nearest]) nearest = i;
-  }
   // On a handle its weight is infinite and f(v) = q_k. L is then the limit of
   // L(v) as v -> p_k: the fit centred at p_k, q_k with the other handles'
   // weights. Handles that coincide with p_k drop out with it.
@@ -356,16 +419,35 @@ void MlsDeformation<D>::deform(PointSet<D>& points, double t0, double t1, Thread
   check_time(t0);
   check_time(t1);
   if (t0 == t1) return;
-  transform(make_handles(handles_at(t0), handles_at(t1)), points, pool);
+  transform(make_handles(handles_at(t0), handles_at(t1), regions_at(t0), regions_at(t1)), points, pool);
 }
 
 template <int D>
 std::vector<Vec<D>> MlsDeformation<D>::handles_at(double t) const {
   check_time(t);
-  std::vector<Vec<D>> handles(direct_.p.size());
+  std::vector<Vec<D>> handles(from_.size());
   // (1 - t) p + t q is exact at both ends, so deform(0, 1) is apply().
-  for (std::size_t i = 0; i < handles.size(); ++i) handles[i] = (1.0 - t) * direct_.p[i] + t * direct_.q[i];
+  for (std::size_t i = 0; i < handles.size(); ++i) handles[i] = (1.0 - t) * from_[i] + t * to_[i];
   return handles;
+}
+
+template <int D>
+std::vector<RegionHandle<D>> MlsDeformation<D>::regions_at(double t) const {
+  check_time(t);
+  std::vector<RegionHandle<D>> regions = from_regions_;
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    regions[r].motion = RegionMotion<D>::lerp(from_regions_[r].motion, to_regions_[r].motion, t);
+  return regions;
+}
+
+template <int D>
+double MlsDeformation<D>::region_gap(const Vec<D>& v) const {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Region& region : direct_.regions) {
+    const Vec<D> rest = region.to_rest * v + region.rest_offset;
+    least = std::min(least, region.scale * (std::sqrt(region.region->squared_distance(rest)) - region.region->reach()));
+  }
+  return least;
 }
 
 template Mat<2> normal_transform<2>(const Mat<2>&);

@@ -5,6 +5,19 @@
 // (2007). Each point v gets the affine, similarity or rigid map l_v that best
 // takes the handles' start positions p_i to their targets q_i under the weights
 // w_i(v) = 1 / |p_i - v|^(2 alpha), and moves to f(v) = l_v(v).
+//
+// Region handles (region_handle.hpp) join the fit as handles of their own: a
+// region moving by M from one place to another adds D + 1 pairs (p, M p) -
+// its centre and a point at its extent along each axis, so that together they
+// fix M whatever the kind - all weighted by 1 / g^(2 alpha), where g is the
+// distance from v to the region's members less its reach. A point within
+// reach (g <= 0) is on the region, as a point on a point handle is on it: it
+// moves by M exactly, so inside a region the surface is the region moved
+// rigidly, and outside the weight grows without bound towards the region's
+// edge, so that f meets M there continuously. The region's members do not
+// enter the fit one by one: a region costs a nearest-member query (a k-d tree)
+// and D + 1 handles, close to a point handle's cost however many members it
+// has (docs/design.md compares the alternatives as measured).
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -12,6 +25,7 @@
 #include <vector>
 
 #include "core/deform/deformation.hpp"
+#include "core/deform/region_handle.hpp"
 
 namespace amls {
 
@@ -65,6 +79,12 @@ class MlsDeformation final : public Deformation<D> {
   // Throws std::invalid_argument if the handle counts differ, a handle has a
   // non-finite coordinate (the message names its index), or alpha is not > 0.
   MlsDeformation(std::vector<Vec<D>> from, std::vector<Vec<D>> to, MlsKind kind = MlsKind::rigid, double alpha = 1.0);
+  // With region handles too: `to_regions` holds the same regions as
+  // `from_regions`, in the same order, at their new places. Throws
+  // std::invalid_argument also for region counts that differ, a region
+  // missing or not the same in both, or a non-finite motion.
+  MlsDeformation(std::vector<Vec<D>> from, std::vector<Vec<D>> to, std::vector<RegionHandle<D>> from_regions,
+                 std::vector<RegionHandle<D>> to_regions, MlsKind kind = MlsKind::rigid, double alpha = 1.0);
 
   // f(v) of the deformation from `from` to `to`. Handles interpolate: f(p_i) = q_i.
   // With no handles f is the identity.
@@ -81,9 +101,20 @@ class MlsDeformation final : public Deformation<D> {
 
   // The handles at time t of the path: (1 - t) from + t to.
   std::vector<Vec<D>> handles_at(double t) const;
+  // The regions at time t: their motions' parameters interpolated (RegionMotion::lerp).
+  std::vector<RegionHandle<D>> regions_at(double t) const;
 
-  const std::vector<Vec<D>>& from() const { return direct_.p; }
-  const std::vector<Vec<D>>& to() const { return direct_.q; }
+  // The point handles.
+  const std::vector<Vec<D>>& from() const { return from_; }
+  const std::vector<Vec<D>>& to() const { return to_; }
+  const std::vector<RegionHandle<D>>& from_regions() const { return from_regions_; }
+  const std::vector<RegionHandle<D>>& to_regions() const { return to_regions_; }
+  // No handle of either kind: the identity.
+  bool empty() const { return from_.empty() && from_regions_.empty(); }
+  // The least distance from v to a region's members less its reach, where
+  // the regions are before the map (<= 0 within one; infinite without
+  // regions): the map is rigid within reach and changes fast just outside.
+  double region_gap(const Vec<D>& v) const;
   MlsKind kind() const { return kind_; }
 
   // 3D rigid and similarity: find the rotation by Newton's polar iteration
@@ -99,9 +130,23 @@ class MlsDeformation final : public Deformation<D> {
   void reset_fallbacks() const { fallbacks_.count.store(0, std::memory_order_relaxed); }
 
  private:
+  // A region handle as the fit sees it: where v lies on the region at rest,
+  // and the region's map x -> linear x + offset from its first place to its second.
+  struct Region {
+    const PointRegion<D>* region;
+    Mat<D> to_rest;  // rest = to_rest x + rest_offset, the inverse of the first place
+    Vec<D> rest_offset;
+    double scale;  // of the first place: distances at rest times this are distances at v
+    Mat<D> linear;
+    Vec<D> offset;
+  };
+
   // What the fit at any v needs from one handle configuration.
   struct Handles {
+    // The point handles, then D + 1 pairs for each region (see the header).
     std::vector<Vec<D>> p, q;
+    std::size_t points = 0;
+    std::vector<Region> regions;
     // Points within this squared distance of a handle are on it (see local_map).
     double snap_squared = 0.0;
   };
@@ -117,11 +162,14 @@ class MlsDeformation final : public Deformation<D> {
     }
   };
 
-  static Handles make_handles(std::vector<Vec<D>> p, std::vector<Vec<D>> q);
+  static Handles make_handles(std::vector<Vec<D>> p, std::vector<Vec<D>> q, const std::vector<RegionHandle<D>>& from,
+                              const std::vector<RegionHandle<D>>& to);
   // `weights` is scratch space for one entry per handle.
   MlsLocalMap<D> evaluate(const Handles& handles, const Vec<D>& v, double* weights) const;
   void transform(const Handles& handles, PointSet<D>& points, ThreadPool& pool) const;
 
+  std::vector<Vec<D>> from_, to_;
+  std::vector<RegionHandle<D>> from_regions_, to_regions_;
   Handles direct_;
   MlsKind kind_;
   double alpha_;

@@ -155,7 +155,11 @@ struct Refined {
 };
 
 // Whether the map at a cell's centre is off the interpolant by more than the
-// tolerance, or a handle lies within one cell of it.
+// tolerance, or a handle lies within one cell of it. A region handle needs no
+// rule of its own: outside its reach the map differs from the region's
+// motion by O(g^2) in the gap g, so it meets the motion with its first
+// derivative and the interpolation follows it (the centre check stands
+// guard), and the points within reach take the motion exactly (see map()).
 template <int D>
 bool needs_refinement(const MlsDeformation<D>& map, const Box<D>& box, const IVec<D>& c, const Corners<D>& corners,
                       double tolerance) {
@@ -320,7 +324,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     if (&mapped != &points) mapped = points;
     map.apply(mapped, pool);
   };
-  if (n == 0 || map.from().empty()) {
+  if (n == 0 || map.empty()) {
     if (&mapped != &points) mapped = points;
     return stats;
   }
@@ -391,12 +395,18 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     return stats;
   }
 
-  // Check every cell; refine those that fail.
+  // Check every cell; refine those that fail. Mark those a region's reach may
+  // enter: their points within reach take the region's motion exactly.
   constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  std::vector<std::uint8_t> near_region(l.cells.size(), 0);
+  const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
   pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k)
+    for (std::size_t k = begin; k < end; ++k) {
       if (needs_refinement(map, box, l.cells[k], l.corners(nodes, k), options.tolerance)) refined_of[k] = 0;
+      const Vec<D> centre = box.node_position(l.cells[k]).array() + 0.5 * box.spacing;
+      near_region[k] = map.region_gap(centre) <= half_diagonal ? 1 : 0;
+    }
   });
   std::vector<std::size_t> to_refine;
   for (std::size_t k = 0; k < l.cells.size(); ++k)
@@ -428,7 +438,10 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
       const std::uint32_t k = l.point_cell[i];
       const std::uint32_t r = refined_of[k];
       Sample<D> sample;
-      if (r == kInterpolated) {
+      if (near_region[k] && map.region_gap(p) <= 0.0) {
+        sample = exact_sample(map, p);
+        ++exact_here;
+      } else if (r == kInterpolated) {
         box.locate(p, t);
         sample = interpolate<D>(l.corners(nodes, k), t, p);
       } else {

@@ -79,7 +79,7 @@ std::vector<Vec<D>> LocalDeformingSurface<D>::rest_handles() const {
 template <int D>
 typename LocalDeformingSurface<D>::Saved LocalDeformingSurface<D>::save() const {
   const bool mapped_on_lattice = rest_ && !exact_;
-  return Saved{mapped_on_lattice ? std::nullopt : std::optional<PointSet<D>>(points_), strain_, rest_, current_,
+  return Saved{mapped_on_lattice ? std::nullopt : std::optional<PointSet<D>>(points_), strain_, rest_, current_, current_regions_,
                node_images_, exact_};
 }
 
@@ -88,17 +88,19 @@ void LocalDeformingSurface<D>::restore(Saved saved) {
   strain_ = std::move(saved.strain);
   rest_ = std::move(saved.rest);
   current_ = std::move(saved.current);
+  current_regions_ = std::move(saved.current_regions);
   node_images_ = std::move(saved.node_images);
   exact_ = saved.exact;
   if (saved.points)
     points_ = std::move(*saved.points);
   else
-    rest_->lattice.map(map_from_rest(current_), rest_->points, points_, nullptr, nullptr, pool_);
+    rest_->lattice.map(map_from_rest(current_, current_regions_), rest_->points, points_, nullptr, nullptr, pool_);
 }
 
 template <int D>
-MlsDeformation<D> LocalDeformingSurface<D>::map_from_rest(const std::vector<Vec<D>>& to) const {
-  MlsDeformation<D> map(rest_->handles, to, rest_->kind, rest_->alpha);
+MlsDeformation<D> LocalDeformingSurface<D>::map_from_rest(const std::vector<Vec<D>>& to,
+                                                         const std::vector<RegionHandle<D>>& to_regions) const {
+  MlsDeformation<D> map(rest_->handles, to, rest_->regions, to_regions, rest_->kind, rest_->alpha);
   map.use_polar_iteration(true);
   return map;
 }
@@ -114,17 +116,20 @@ template <int D>
 bool LocalDeformingSurface<D>::map_exactly() {
   if (!rest_ || exact_) return false;
   PointSet<D> exact = rest_->points;
-  map_from_rest(current_).apply(exact, pool_);
+  map_from_rest(current_, current_regions_).apply(exact, pool_);
   points_ = std::move(exact);
   exact_ = true;
   return true;
 }
 
 template <int D>
-void LocalDeformingSurface<D>::rebase(const std::vector<Vec<D>>& handles, MlsKind kind, double alpha) {
+void LocalDeformingSurface<D>::rebase(const std::vector<Vec<D>>& handles, const std::vector<RegionHandle<D>>& regions,
+                                      MlsKind kind, double alpha) {
   leave_rest_state();
-  rest_ = std::make_shared<const Rest>(Rest{points_, MlsRestLattice<D>(points_, lattice_, pool_), handles, kind, alpha});
+  rest_ = std::make_shared<const Rest>(
+      Rest{points_, MlsRestLattice<D>(points_, lattice_, pool_), handles, regions, kind, alpha});
   current_ = handles;
+  current_regions_ = regions;
   node_images_.clear();
 }
 
@@ -132,15 +137,16 @@ template <int D>
 LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformation) {
   Stopwatch clock;
   const std::size_t before = points_.size();
-  if (!rest_ || current_ != deformation.from() || rest_->kind != deformation.kind() ||
-      rest_->alpha != deformation.alpha())
-    rebase(deformation.from(), deformation.kind(), deformation.alpha());
+  if (!rest_ || current_ != deformation.from() || !same_places(current_regions_, deformation.from_regions()) ||
+      rest_->kind != deformation.kind() || rest_->alpha != deformation.alpha())
+    rebase(deformation.from(), deformation.from_regions(), deformation.kind(), deformation.alpha());
   // The strain of this step alone, summed: the whole drag's map can be nearly
   // rigid where its steps were not (a handle pulled out and back), and the
   // sampling followed the steps.
-  const MlsDeformation<D> map = map_from_rest(deformation.to());
+  const MlsDeformation<D> map = map_from_rest(deformation.to(), deformation.to_regions());
   const MlsLatticeStats mapped = rest_->lattice.map(map, rest_->points, points_, &strain_, &node_images_, pool_);
   current_ = deformation.to();
+  current_regions_ = deformation.to_regions();
   exact_ = mapped.exact_points == points_.size();
   const double limit = resampler_.options().strain_limit;
   const bool resamples = std::any_of(strain_.begin(), strain_.end(), [&](float s) { return s > limit; });
@@ -156,7 +162,7 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
   if (resamples) {
     stats = resample_strained();
     rest_.reset();
-    rebase(deformation.to(), deformation.kind(), deformation.alpha());
+    rebase(deformation.to(), deformation.to_regions(), deformation.kind(), deformation.alpha());
   }
   stats.points_before = before;
   stats.map = mapped;

@@ -57,7 +57,7 @@ class LocalDeformingSurface {
   LocalStepStats resample_all();
   // One step: the handles move from deformation.from() to deformation.to();
   // the points follow and are resampled where strained. A step whose `from`
-  // handles (or kind, or alpha) are not the last step's `to` starts a new
+  // handles (or regions, kind, or alpha) are not the last step's `to` starts a new
   // rest state, at `from`.
   LocalStepStats step(const MlsDeformation<D>& deformation);
   // One step of any deformation from t0 to t1: the strain measured on the
@@ -90,6 +90,7 @@ class LocalDeformingSurface {
     PointSet<D> points;
     MlsRestLattice<D> lattice;
     std::vector<Vec<D>> handles;
+    std::vector<RegionHandle<D>> regions;
     MlsKind kind = MlsKind::rigid;
     double alpha = 1.0;
   };
@@ -105,6 +106,7 @@ class LocalDeformingSurface {
     std::vector<float> strain;
     std::shared_ptr<const Rest> rest;
     std::vector<Vec<D>> current;
+    std::vector<RegionHandle<D>> current_regions;
     MlsNodeImages<D> node_images;
     bool exact = true;
   };
@@ -113,12 +115,13 @@ class LocalDeformingSurface {
 
  private:
   LocalStepStats resample_strained();
-  // The map from the rest handles to `to`, by the polar iteration.
-  MlsDeformation<D> map_from_rest(const std::vector<Vec<D>>& to) const;
+  // The map from the rest handles to `to` (and the rest regions to `to_regions`), by the polar iteration.
+  MlsDeformation<D> map_from_rest(const std::vector<Vec<D>>& to, const std::vector<RegionHandle<D>>& to_regions) const;
   // Ends the rest state: points_ becomes the exact map of the rest points if it was interpolated.
   void leave_rest_state();
   // Starts a new rest state at `handles` from the current points, mapped exactly first.
-  void rebase(const std::vector<Vec<D>>& handles, MlsKind kind, double alpha);
+  void rebase(const std::vector<Vec<D>>& handles, const std::vector<RegionHandle<D>>& regions, MlsKind kind,
+              double alpha);
 
   Grid<D> grid_;
   AmlsParameters parameters_;
@@ -129,6 +132,7 @@ class LocalDeformingSurface {
   // None before the first MLS step and after the points change otherwise.
   std::shared_ptr<const Rest> rest_;
   std::vector<Vec<D>> current_;  // the handles the points were last mapped to
+  std::vector<RegionHandle<D>> current_regions_;  // and the regions
   MlsNodeImages<D> node_images_;  // the rest lattice's nodes mapped to current_ (empty: at rest)
   bool exact_ = true;            // points_ is the exact map of the rest points to current_
   ThreadPool pool_;

@@ -294,18 +294,88 @@ void check_point_estimate(const Scene<D>& scene, const Place& at) {
           "; a spacing and h of " + format_number(fitting) + " or more would fit");
 }
 
+// A region handle's motion: {"translation": [...], "rotation": angle (2D) or
+// rotation vector (3D), "scale": s}, each key optional (the identity).
 template <int D>
-DeformationHistory<D> parse_stages(const json& j, const Place& at) {
+RegionMotion<D> parse_motion(const json& j, const Place& at) {
+  ObjectReader r(j, at);
+  RegionMotion<D> motion;
+  if (const json* v = r.find("translation")) motion.translation = as_vec<D>(*v, at.key("translation"));
+  if (const json* v = r.find("rotation")) {
+    if constexpr (D == 2) motion.rotation[0] = as_number(*v, at.key("rotation"));
+    else motion.rotation = as_vec<3>(*v, at.key("rotation"));
+  }
+  if (const json* v = r.find("scale")) motion.scale = as_in_range(*v, at.key("scale"), ranges::kRegionScale);
+  r.finish();
+  return motion;
+}
+
+// The scene's regions: each {"points": [...], "reach": r} (reach: h unless given).
+template <int D>
+std::vector<std::shared_ptr<const PointRegion<D>>> parse_regions(const json& j, const Place& at, double h) {
+  if (!j.is_array()) at.fail("expected an array of regions, got " + type_name(j));
+  if (!ranges::kRegions.contains(static_cast<double>(j.size())))
+    at.fail(out_of_range_text(static_cast<double>(j.size()), ranges::kRegions));
+  std::vector<std::shared_ptr<const PointRegion<D>>> regions;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const Place region_at = at.index(i);
+    ObjectReader r(j[i], region_at);
+    const json& points = r.require("points");
+    if (points.is_array() && !ranges::kPoints.contains(static_cast<double>(points.size())))
+      region_at.key("points").fail(out_of_range_text(static_cast<double>(points.size()), ranges::kPoints));
+    std::vector<Vec<D>> members = as_points<D>(points, region_at.key("points"));
+    double reach = h;
+    if (const json* v = r.find("reach")) reach = as_in_range(*v, region_at.key("reach"), ranges::kSpacing);
+    r.finish();
+    regions.push_back(std::make_shared<const PointRegion<D>>(std::move(members), reach));
+  }
+  return regions;
+}
+
+// A stage's region handles: [{"region": index, "pinned": bool, "motion": {...}}].
+template <int D>
+std::vector<RegionHandle<D>> parse_stage_regions(const json& j, const Place& at,
+                                                 const std::vector<std::shared_ptr<const PointRegion<D>>>& regions) {
+  if (!j.is_array()) at.fail("expected an array of region handles, got " + type_name(j));
+  if (!ranges::kStageRegions.contains(static_cast<double>(j.size())))
+    at.fail(out_of_range_text(static_cast<double>(j.size()), ranges::kStageRegions));
+  std::vector<RegionHandle<D>> out;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const Place handle_at = at.index(i);
+    ObjectReader r(j[i], handle_at);
+    if (regions.empty()) handle_at.fail("the scene defines no 'regions' to refer to");
+    const std::size_t index = as_count(r.require("region"), handle_at.key("region"),
+                                       ParameterRange{0, static_cast<double>(regions.size() - 1), "a region's index"});
+    for (const RegionHandle<D>& earlier : out)
+      if (earlier.region == regions[index])
+        handle_at.key("region").fail("region " + std::to_string(index) + " is in this stage twice");
+    RegionHandle<D> handle{regions[index], {}, false};
+    if (const json* v = r.find("pinned")) handle.pinned = as_bool(*v, handle_at.key("pinned"));
+    if (const json* v = r.find("motion")) handle.motion = parse_motion<D>(*v, handle_at.key("motion"));
+    r.finish();
+    out.push_back(std::move(handle));
+  }
+  return out;
+}
+
+template <int D>
+DeformationHistory<D> parse_stages(const json& j, const Place& at,
+                                   const std::vector<std::shared_ptr<const PointRegion<D>>>& regions) {
   if (!j.is_array()) at.fail("expected an array of stages, got " + type_name(j));
   if (j.empty()) at.fail("the history has no stage");
   DeformationHistory<D> history;
   for (std::size_t s = 0; s < j.size(); ++s) {
     const Place stage_at = at.index(s);
     ObjectReader stage(j[s], stage_at);
-    history.begin_stage(as_points<D>(stage.require("handles"), stage_at.key("handles")));
+    std::vector<RegionHandle<D>> stage_regions;
+    if (const json* v = stage.find("regions")) stage_regions = parse_stage_regions<D>(*v, stage_at.key("regions"), regions);
+    history.begin_stage(as_points<D>(stage.require("handles"), stage_at.key("handles")), stage_regions);
     const std::size_t handles = history.stages.back().start.size();
-    if (!ranges::kHandles.contains(static_cast<double>(handles)))
-      stage_at.key("handles").fail(out_of_range_text(static_cast<double>(handles), ranges::kHandles));
+    // A stage moved by regions alone may have no point handle.
+    const ParameterRange handle_range =
+        stage_regions.empty() ? ranges::kHandles : ParameterRange{0.0, ranges::kHandles.max, ranges::kHandles.meaning};
+    if (!handle_range.contains(static_cast<double>(handles)))
+      stage_at.key("handles").fail(out_of_range_text(static_cast<double>(handles), handle_range));
     const json& targets = stage.require("targets");
     const Place targets_at = stage_at.key("targets");
     if (!targets.is_array()) targets_at.fail("expected an array of targets, got " + type_name(targets));
@@ -315,6 +385,17 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at) {
       HandleTarget<D> next;
       next.handles = as_points<D>(target.require("handles"), target_at.key("handles"));
       next.steps = as_count(target.require("steps"), target_at.key("steps"), ranges::kTargetSteps);
+      if (!stage_regions.empty()) {
+        const Place motions_at = target_at.key("regions");
+        const json& motions = target.require("regions");
+        if (!motions.is_array()) motions_at.fail("expected an array of region motions, got " + type_name(motions));
+        if (motions.size() != stage_regions.size())
+          motions_at.fail(std::to_string(motions.size()) + " motions, but the stage has " +
+                          std::to_string(stage_regions.size()) +
+                          " regions (adding or removing a region starts a new stage)");
+        for (std::size_t m = 0; m < motions.size(); ++m)
+          next.regions.push_back(parse_motion<D>(motions[m], motions_at.index(m)));
+      }
       target.finish();
       history.stages.back().targets.push_back(std::move(next));
     }
@@ -394,7 +475,15 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
     if (const json* alpha = deformation.find("alpha")) scene.alpha = as_in_range(*alpha, at.key("alpha"), ranges::kAlpha);
     deformation.finish();
   }
-  scene.history = parse_stages<D>(r.require("stages"), root.key("stages"));
+  std::vector<std::shared_ptr<const PointRegion<D>>> regions;
+  if (const json* v = r.find("regions")) {
+    try {
+      regions = parse_regions<D>(*v, root.key("regions"), scene.h());
+    } catch (const std::invalid_argument& e) {
+      root.key("regions").fail(e.what());
+    }
+  }
+  scene.history = parse_stages<D>(r.require("stages"), root.key("stages"), regions);
   r.finish();
   return scene;
 }
@@ -413,6 +502,18 @@ json points_json(const std::vector<Vec<D>>& points) {
 template <int D>
 json vec_json(const Vec<D>& v) {
   return points_json<D>({v})[0];
+}
+
+template <int D>
+json motion_json(const RegionMotion<D>& motion) {
+  json out = json::object();
+  if (!motion.translation.isZero(0.0)) out["translation"] = vec_json<D>(motion.translation);
+  if (!motion.rotation.isZero(0.0)) {
+    if constexpr (D == 2) out["rotation"] = motion.rotation[0];
+    else out["rotation"] = vec_json<3>(motion.rotation);
+  }
+  if (motion.scale != 1.0) out["scale"] = motion.scale;
+  return out;
 }
 
 }  // namespace
@@ -499,12 +600,44 @@ json to_json(const Scene<D>& scene) {
   if (scene.widen_support) j["widen_support"] = true;
   j["variant"] = to_string(scene.variant);
   j["deformation"] = {{"kind", to_string(scene.kind)}, {"alpha", scene.alpha}};
+  // Each region once, numbered in the order the stages first use them.
+  std::vector<const PointRegion<D>*> regions;
+  auto region_index = [&](const PointRegion<D>* region) {
+    const auto it = std::find(regions.begin(), regions.end(), region);
+    if (it != regions.end()) return static_cast<std::size_t>(it - regions.begin());
+    regions.push_back(region);
+    return regions.size() - 1;
+  };
   json stages = json::array();
   for (const HandleStage<D>& stage : scene.history.stages) {
     json targets = json::array();
-    for (const HandleTarget<D>& target : stage.targets)
-      targets.push_back({{"steps", target.steps}, {"handles", points_json<D>(target.handles)}});
-    stages.push_back({{"handles", points_json<D>(stage.start)}, {"targets", std::move(targets)}});
+    for (const HandleTarget<D>& target : stage.targets) {
+      json target_json = {{"steps", target.steps}, {"handles", points_json<D>(target.handles)}};
+      if (!stage.regions.empty()) {
+        json motions = json::array();
+        for (const RegionMotion<D>& motion : target.regions) motions.push_back(motion_json<D>(motion));
+        target_json["regions"] = std::move(motions);
+      }
+      targets.push_back(std::move(target_json));
+    }
+    json stage_json = {{"handles", points_json<D>(stage.start)}, {"targets", std::move(targets)}};
+    if (!stage.regions.empty()) {
+      json handles = json::array();
+      for (const RegionHandle<D>& handle : stage.regions) {
+        json handle_json = {{"region", region_index(handle.region.get())}};
+        if (handle.pinned) handle_json["pinned"] = true;
+        if (!handle.motion.is_identity()) handle_json["motion"] = motion_json<D>(handle.motion);
+        handles.push_back(std::move(handle_json));
+      }
+      stage_json["regions"] = std::move(handles);
+    }
+    stages.push_back(std::move(stage_json));
+  }
+  if (!regions.empty()) {
+    json out = json::array();
+    for (const PointRegion<D>* region : regions)
+      out.push_back({{"points", points_json<D>(region->members())}, {"reach", region->reach()}});
+    j["regions"] = std::move(out);
   }
   j["stages"] = std::move(stages);
   return j;

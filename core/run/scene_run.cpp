@@ -216,7 +216,8 @@ class SceneRunner {
   // One step of the history: the points and the tracers deformed (under
   // `local`, the points resampled where strained too).
   void deform(const HistoryStep<D>& step) {
-    const MlsDeformation<D> deformation(step.from, step.to, scene_.kind, scene_.alpha);
+    const MlsDeformation<D> deformation(step.from, step.to, step.regions_from, step.regions_to, scene_.kind,
+                                        scene_.alpha);
     if (local_) {
       const LocalStepStats stats = local_->step(deformation);
       report_.per_step.back().timings += stats.timings;

@@ -43,6 +43,12 @@ inline constexpr ParameterRange kSubsteps{1.0, 1000.0, "RK4 steps per dt"};
 inline constexpr ParameterRange kTargetSteps{1.0, 100000.0, "steps"};
 inline constexpr ParameterRange kSceneSteps{1.0, 1000000.0, "steps in all stages"};
 inline constexpr ParameterRange kHandles{1.0, 1024.0, "handles in a stage"};
+// Region handles: a scene's regions, and those one stage uses (each costs a
+// nearest-member query and D + 1 handles in every point's MLS map).
+inline constexpr ParameterRange kRegions{1.0, 64.0, "regions"};
+inline constexpr ParameterRange kStageRegions{0.0, 64.0, "regions in a stage"};
+// A region handle's uniform scale.
+inline constexpr ParameterRange kRegionScale{1e-3, 1e3, "a region's scale"};
 // The MLS deformation's weights |p_i - v|^(-2 alpha).
 inline constexpr ParameterRange kAlpha{0.1, 10.0, "the MLS deformation's weight exponent"};
 inline constexpr ParameterRange kTracersPerPoint{1.0, 1000.0, "tracer points per initial point"};

@@ -1,0 +1,155 @@
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/deform/mls_deformation.hpp"
+#include "core/run/scene_run.hpp"
+#include "region_fixtures.hpp"
+
+using namespace amls;
+
+namespace {
+
+constexpr double kH = 0.05;  // the fixtures' grid: about 5,000 points on the unit sphere
+// Within 3 h of the turned cap's rim the resampled surface is fitted to the bent neck's points too.
+constexpr double kTurnedRimH = 0.5;  // 0.33 h measured (bench/region_handle_bench.cpp)
+
+RegionMotion<3> lifted(double by) {
+  RegionMotion<3> m;
+  m.translation = Vec<3>(0.0, 0.0, by);
+  return m;
+}
+
+// How far x is from the unit sphere moved by `motion` about `centre`: the
+// surface a region so moved must keep.
+double off_moved_sphere(const Vec<3>& x, const RegionMotion<3>& motion, const Vec<3>& centre) {
+  const Vec<3> rest = motion.linear().inverse() * (x - motion.offset(centre));
+  return std::abs(rest.norm() - 1.0) * motion.scale;
+}
+
+struct RegionFit {
+  std::size_t points = 0;  // final points within the region's reach
+  double worst = 0.0;      // the largest distance of one from the region's moved sphere, in h
+  double interior = 0.0;   // the same over those whose place at rest is on the sphere above z = inner_z
+};
+
+RegionFit fit_of(const PointSet<3>& points, const RegionHandle<3>& handle, double inner_z = 2.0) {
+  RegionFit fit;
+  const std::vector<Vec<3>> placed = handle.placed_members();
+  const PointRegion<3> region(placed, handle.region->reach() * handle.motion.scale);
+  const Mat<3> linear = handle.motion.linear();
+  const Vec<3> offset = handle.motion.offset(handle.region->centre());
+  for (const Vec<3>& x : points.positions) {
+    if (!region.contains(x)) continue;
+    ++fit.points;
+    const double off = off_moved_sphere(x, handle.motion, handle.region->centre()) / kH;
+    fit.worst = std::max(fit.worst, off);
+    if ((linear.inverse() * (x - offset)).normalized().z() > inner_z) fit.interior = std::max(fit.interior, off);
+  }
+  return fit;
+}
+
+// Runs the scene and returns its final point set.
+PointSet<3> final_points(const Scene<3>& scene, ResamplePolicy::Kind policy) {
+  SceneRunOptions options;
+  options.tracers_per_point = 1;
+  options.policy.kind = policy;
+  options.threads = 2;
+  PointSet<3> last;
+  const SceneRunReport report = run_scene<3>(scene, options, [&](std::size_t, const PointSet<3>& p) { last = p; });
+  REQUIRE_FALSE(report.broken);
+  return last;
+}
+
+}  // namespace
+
+TEST_CASE("region handle: the map moves points within reach exactly and meets the motion continuously outside") {
+  const auto north = test::sphere_cap(kH, 1.0, 0.6);
+  const auto south = test::sphere_cap(kH, -1.0, 0.6);
+  RegionMotion<3> turned;
+  turned.translation = Vec<3>(0.1, -0.2, 0.3);
+  turned.rotation = Vec<3>(0.3, 0.0, 0.4);
+  turned.scale = 1.2;
+  const MlsDeformation<3> map({Vec<3>(1, 0, 0)}, {Vec<3>(1.1, 0, 0)}, {{south, {}, true}, {north, {}, false}},
+                              {{south, {}, true}, {north, turned, false}}, MlsKind::similarity);
+  const Mat<3> linear = turned.linear();
+  const Vec<3> offset = turned.offset(north->centre());
+  for (const Vec<3>& m : north->members()) {
+    const MlsLocalMap<3> local = map.local_map(m);
+    CHECK((local.position - (linear * m + offset)).norm() < 1e-12);
+    CHECK((local.linear - linear).norm() < 1e-12);
+  }
+  for (const Vec<3>& m : south->members()) CHECK((map.map(m) - m).norm() < 1e-12);
+  // Just outside the reach the map is within a small fraction of h of the motion, and further out it departs.
+  // Straight above the pole, at the height where the gap to the region is `gap`:
+  const auto above_pole = [&](double gap) {
+    double low = 0.0, high = 3.0;
+    for (int i = 0; i < 80; ++i) {
+      const double mid = 0.5 * (low + high);
+      (map.region_gap(Vec<3>(0, 0, 1.0 + mid)) < gap ? low : high) = mid;
+    }
+    return Vec<3>(0, 0, 1.0 + high);
+  };
+  const auto off_motion = [&](double gap) {
+    const Vec<3> x = above_pole(gap);
+    return (map.map(x) - (linear * x + offset)).norm();
+  };
+  CHECK(off_motion(2.0) > 0.01);
+}
+
+TEST_CASE("region handle: with no point handle and the regions unmoved the map is the identity") {
+  const auto north = test::sphere_cap(kH, 1.0, 0.6);
+  const MlsDeformation<3> map({}, {}, {{north, {}, true}}, {{north, {}, true}});
+  CHECK_FALSE(map.empty());
+  for (const Vec<3>& x : {Vec<3>(0, 0, 1), Vec<3>(0.3, -0.2, -0.9), Vec<3>(2, 2, 2)})
+    CHECK((map.map(x) - x).norm() < 1e-12);
+}
+
+TEST_CASE("region handle: a map's regions must be the same at both ends") {
+  const auto north = test::sphere_cap(kH, 1.0, 0.6);
+  const auto south = test::sphere_cap(kH, -1.0, 0.6);
+  CHECK_THROWS_AS(MlsDeformation<3>({}, {}, {{north, {}, false}}, {}), std::invalid_argument);
+  CHECK_THROWS_AS(MlsDeformation<3>({}, {}, {{north, {}, false}}, {{south, {}, false}}), std::invalid_argument);
+  RegionMotion<3> flat;
+  flat.scale = 0.0;
+  CHECK_THROWS_AS(MlsDeformation<3>({}, {}, {{north, {}, false}}, {{north, flat, false}}), std::invalid_argument);
+}
+
+TEST_CASE("region handle: over a 40-step drag of the north cap the pinned south cap stays within 0.05 h") {
+  const RegionMotion<3> moved = lifted(0.4);
+  const Scene<3> scene = test::sphere_with_caps(kH, moved, 40);
+  for (const ResamplePolicy::Kind policy : {ResamplePolicy::Kind::always, ResamplePolicy::Kind::local}) {
+    CAPTURE(static_cast<int>(policy));
+    const PointSet<3> points = final_points(scene, policy);
+    const std::vector<RegionHandle<3>> regions = scene.history.stages[0].regions;
+    const RegionFit pinned = fit_of(points, regions[0]);
+    const RegionFit moving = fit_of(points, RegionHandle<3>{regions[1].region, moved, false});
+    CHECK(pinned.points > 500);
+    CHECK(moving.points > 500);
+    CHECK(pinned.worst < 0.05);
+    CHECK(moving.worst < 0.05);
+  }
+}
+
+TEST_CASE("region handle: a cap turned by 90 degrees in 10 steps stays rigid") {
+  // The north cap (z > 0.8) lifted by 0.5 and tilted by 90 degrees about the x axis: its neck bends sharply.
+  RegionMotion<3> turned;
+  turned.rotation = Vec<3>(0.5 * std::numbers::pi, 0.0, 0.0);
+  turned.translation = Vec<3>(0.0, 0.0, 0.5);
+  const Scene<3> scene = test::sphere_with_caps(kH, turned, 10, 0.8);
+  const PointSet<3> points = final_points(scene, ResamplePolicy::Kind::always);
+  const std::vector<RegionHandle<3>> regions = scene.history.stages[0].regions;
+  // Inside: more than 3 h (the MLS support) from the rim, where no point's fit reaches the bent neck.
+  const double inner_z = std::cos(std::acos(0.8) - 3.0 * kH);
+  const RegionFit moving = fit_of(points, RegionHandle<3>{regions[1].region, turned, false}, inner_z);
+  CHECK(moving.points > 200);
+  CHECK(moving.interior < 0.05);
+  CHECK(moving.worst < kTurnedRimH);
+  // Every step turned it by 9 degrees: the history's motions interpolate the rotation vector.
+  const HistoryStep<3> third = scene.history.step(3);
+  const Mat<3> step_turn = third.regions_to[1].motion.rotation_matrix() *
+                           third.regions_from[1].motion.rotation_matrix().transpose();
+  CHECK(std::acos((step_turn.trace() - 1.0) / 2.0) == doctest::Approx(std::numbers::pi / 20.0).epsilon(1e-12));
+}
