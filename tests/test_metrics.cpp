@@ -87,3 +87,68 @@ TEST_CASE("metrics: a curve with a gap is not one closed curve") {
   CHECK(e.scan.bad_rays > 100);
   CHECK_FALSE(e.scan.reason.empty());
 }
+
+TEST_CASE("metrics: a frame's spacing summary: every point's as the sorted spacings say, or an even sample's") {
+  // A sphere sampled unevenly enough that spacings differ, some outside [0.3 h, 1.5 h].
+  const double h = 0.01;
+  PointSet<3> points = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
+  for (std::size_t i = 0; i < 200; ++i) points.add(points.positions[i] + Vec<3>(0.001, 0.0, 0.0), points.normals[i]);
+  ThreadPool one(1), three(3);
+  const std::vector<double> every = nearest_neighbour_spacing_per_point(points, h, three);
+  SUBCASE("all points: the figures of the sorted spacings") {
+    std::vector<double> sorted = every;
+    std::sort(sorted.begin(), sorted.end());
+    const SpacingStats expected = spacing_stats_of(sorted);
+    const SpacingSummary s = spacing_summary(points, h, points.size(), three);
+    CHECK_FALSE(s.sampled());
+    CHECK(s.measured == points.size());
+    CHECK(s.of == points.size());
+    CHECK(s.h.min == expected.min);
+    CHECK(s.h.median == expected.median);
+    CHECK(s.h.max == expected.max);
+    const auto below = static_cast<std::size_t>(std::count_if(sorted.begin(), sorted.end(), [](double d) { return d < 0.3; }));
+    const auto above = static_cast<std::size_t>(std::count_if(sorted.begin(), sorted.end(), [](double d) { return d > 1.5; }));
+    CHECK(below >= 200);  // the added pairs, 0.1 h apart
+    CHECK(s.below == below);
+    CHECK(s.above == above);
+  }
+  SUBCASE("a sample: point k n / 1000 for k < 1000, the same for any thread count") {
+    const SpacingSummary s = spacing_summary(points, h, 1000, one);
+    CHECK(s.sampled());
+    CHECK(s.measured == 1000);
+    CHECK(s.of == points.size());
+    std::vector<double> picked;
+    for (std::size_t k = 0; k < 1000; ++k) picked.push_back(every[k * points.size() / 1000]);
+    std::sort(picked.begin(), picked.end());
+    CHECK(s.h.min == picked.front());
+    CHECK(s.h.median == picked[500]);
+    CHECK(s.h.max == picked.back());
+    const SpacingSummary t = spacing_summary(points, h, 1000, three);
+    CHECK(t.h.median == s.h.median);
+    CHECK(t.below == s.below);
+    CHECK(t.above == s.above);
+  }
+  SUBCASE("fewer than two points measure nothing") {
+    PointSet<3> lone;
+    lone.add(Vec<3>::Zero(), Vec<3>::UnitZ());
+    const SpacingSummary s = spacing_summary(lone, h, 1000, three);
+    CHECK(s.measured == 0);
+    CHECK(s.of == 1);
+    CHECK_FALSE(s.sampled());
+  }
+}
+
+TEST_CASE("metrics: nearest distances on a pool have the same bits for any thread count") {
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 30000);
+  const PointSet<3> bigger = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.31, 5000);
+  const DistanceStats serial = nearest_distance_stats(sphere.positions, bigger.positions, 0.01);
+  CHECK(serial.count == 30000);
+  CHECK(serial.mean > 1.0);  // at least the radii's 0.01 apart, 1 h
+  for (const int threads : {2, 3, 8}) {
+    ThreadPool pool(threads);
+    const DistanceStats d = nearest_distance_stats(sphere.positions, bigger.positions, 0.01, pool);
+    CHECK(d.count == serial.count);
+    CHECK(d.mean == serial.mean);
+    CHECK(d.max == serial.max);
+  }
+}

@@ -53,6 +53,11 @@ struct SceneRunOptions {
   int threads = 1;
   double tracers_per_point = 50.0;
   std::size_t max_steps = 0;  // stop after this many steps (0: the whole history)
+  // A frame of more points has its spacing measured on an even sample of
+  // this many (core/surface/metrics.hpp, spacing_summary): measuring every
+  // point of a million-point frame costs more than the step that made it.
+  static constexpr std::size_t kDefaultSpacingSample = 100000;
+  std::size_t spacing_sample = kDefaultSpacingSample;
 };
 
 struct SceneStepRecord {
@@ -61,6 +66,7 @@ struct SceneStepRecord {
   std::size_t points = 0;  // in the frame of this step
   bool resampled = false;  // the frame is a resample's (R_k), made in this record's step
   SpacingStats spacing_h;  // of the frame's points, in units of h
+  std::size_t spacing_measured = 0;  // the points spacing_h is of: all, or a sample of a large frame
   std::size_t spacing_below = 0;  // points whose nearest neighbour is nearer than 0.3 h
   std::size_t spacing_above = 0;  // ... farther than 1.5 h
   PhaseTimings timings;    // of the work that made the frame (resample) and of the deformation after it
@@ -109,6 +115,8 @@ struct SceneRunReport {
   // largest maximum.
   SpacingStats spacing_h;
   std::size_t frames_measured = 0;
+  std::size_t spacing_sample = 0;          // SceneRunOptions::spacing_sample
+  std::size_t spacing_sampled_frames = 0;  // frames (counted or not) measured on a sample of their points
   // Over the same frames: points measured, and those with a nearest neighbour
   // nearer than 0.3 h or farther than 1.5 h (the band a well-sampled surface keeps).
   std::size_t spacing_points = 0;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math/root_finding.hpp"
+#include "core/surface/spacing_band.hpp"
 
 namespace amls {
 
@@ -34,21 +35,31 @@ double nearest_squared(const PointIndex<D>& index, const std::vector<Vec<D>>& po
   return best2;
 }
 
+// The nearest-neighbour distance in h of points pick(0), ..., pick(count - 1)
+// to the others, on the pool.
+template <int D, typename Pick>
+std::vector<double> nearest_spacings_of(const PointSet<D>& points, double h, std::size_t count, Pick pick,
+                                        ThreadPool& pool) {
+  if (points.size() < 2) return {};
+  PointIndex<D> index;
+  index.build(points.positions, Vec<D>::Zero(), 2.0 * h, pool);
+  std::vector<double> nearest(count);
+  pool.parallel_for(count, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = pick(k);
+      nearest[k] =
+          std::sqrt(nearest_squared(index, points.positions, points.positions[i], 2.0 * h, static_cast<std::uint32_t>(i))) /
+          h;
+    }
+  });
+  return nearest;
+}
+
 }  // namespace
 
 template <int D>
 std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool) {
-  if (points.size() < 2) return {};
-  PointIndex<D> index;
-  index.build(points.positions, Vec<D>::Zero(), 2.0 * h, pool);
-  std::vector<double> nearest(points.size());
-  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t i = begin; i < end; ++i)
-      nearest[i] = std::sqrt(nearest_squared(index, points.positions, points.positions[i], 2.0 * h,
-                                             static_cast<std::uint32_t>(i))) /
-                   h;
-  });
-  return nearest;
+  return nearest_spacings_of(points, h, points.size(), [](std::size_t k) { return k; }, pool);
 }
 
 template <int D>
@@ -79,22 +90,74 @@ SpacingStats spacing_stats(const PointSet<D>& points, double h) {
 }
 
 template <int D>
-DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h) {
+SpacingSummary spacing_summary(const PointSet<D>& points, double h, std::size_t max_measured, ThreadPool& pool) {
+  SpacingSummary s;
+  s.of = points.size();
+  if (points.size() < 2) return s;
+  const std::size_t n = points.size();
+  s.measured = std::min(n, std::max<std::size_t>(max_measured, 1));
+  // Point floor(k n / measured): every point when none is left out, else
+  // points evenly spread through the set's order (a hashed set's is by cell,
+  // so the sample is spread over the surface).
+  const auto pick = [&](std::size_t k) {
+    return k * n / s.measured;  // (k n < 2^64: the index takes under 2^32 points)
+  };
+  std::vector<double> spacings = nearest_spacings_of(points, h, s.measured, pick, pool);
+  // No full sort: the median's place, and one pass for the rest.
+  const auto middle = spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2);
+  std::nth_element(spacings.begin(), middle, spacings.end());
+  s.h.median = *middle;
+  s.h.min = s.h.max = spacings.front();
+  for (const double d : spacings) {
+    s.h.min = std::min(s.h.min, d);
+    s.h.max = std::max(s.h.max, d);
+    s.below += d < kSpacingBandLow ? 1 : 0;
+    s.above += d > kSpacingBandHigh ? 1 : 0;
+  }
+  return s;
+}
+
+namespace {
+
+// Nearest distances are summed in chunks of a fixed size and the chunks in
+// order, so that the mean has the same bits for any thread count.
+constexpr std::size_t kDistanceChunk = 4096;
+
+}  // namespace
+
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h,
+                                     ThreadPool& pool) {
   DistanceStats s;
   if (from.empty()) return s;
   if (to.empty()) throw std::invalid_argument("nearest distances: the set to measure against is empty");
   PointIndex<D> index;
-  index.build(to, to.front(), 2.0 * h);
+  index.build(to, to.front(), 2.0 * h, pool);
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  const std::size_t chunks = (from.size() + kDistanceChunk - 1) / kDistanceChunk;
+  std::vector<double> sums(chunks, 0.0), maxima(chunks, 0.0);
+  pool.parallel_for(chunks, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t c = begin; c < end; ++c)
+      for (std::size_t i = c * kDistanceChunk; i < std::min(from.size(), (c + 1) * kDistanceChunk); ++i) {
+        const double d = std::sqrt(nearest_squared(index, to, from[i], 2.0 * h, kNone)) / h;
+        sums[c] += d;
+        maxima[c] = std::max(maxima[c], d);
+      }
+  });
   double sum = 0.0;
-  for (const Vec<D>& p : from) {
-    const double d = std::sqrt(nearest_squared(index, to, p, 2.0 * h, kNone)) / h;
-    sum += d;
-    s.max = std::max(s.max, d);
+  for (std::size_t c = 0; c < chunks; ++c) {
+    sum += sums[c];
+    s.max = std::max(s.max, maxima[c]);
   }
   s.count = from.size();
   s.mean = sum / static_cast<double>(from.size());
   return s;
+}
+
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h) {
+  ThreadPool one(1);
+  return nearest_distance_stats(from, to, h, one);
 }
 
 template SpacingStats spacing_stats<2>(const PointSet<2>&, double);
@@ -107,6 +170,12 @@ template std::vector<double> nearest_neighbour_spacing_per_point<2>(const PointS
 template std::vector<double> nearest_neighbour_spacing_per_point<3>(const PointSet<3>&, double, ThreadPool&);
 template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
 template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
+template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double,
+                                                 ThreadPool&);
+template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double,
+                                                 ThreadPool&);
+template SpacingSummary spacing_summary<2>(const PointSet<2>&, double, std::size_t, ThreadPool&);
+template SpacingSummary spacing_summary<3>(const PointSet<3>&, double, std::size_t, ThreadPool&);
 
 namespace {
 
