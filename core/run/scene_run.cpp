@@ -135,6 +135,10 @@ class SceneRunner {
     tracers_ = std::move(shape.tracers);
     report_.tracers = tracers_.size();
     probe_stride_ = static_cast<std::size_t>(std::max(1.0, std::round(options_.tracers_per_point / 4.0)));
+    // A large run probes every k-th tracer, k as small as keeps the probes
+    // to max_probes: F at a million probes costs a whole resample's normals.
+    if (options_.max_probes > 0)
+      probe_stride_ = std::max(probe_stride_, (tracers_.size() + options_.max_probes - 1) / options_.max_probes);
     report_.probes = (tracers_.size() + probe_stride_ - 1) / probe_stride_;
 
     const Grid<D> grid = resampling_grid(shape.points, scene_.h(), scene_.radius_factor);

@@ -58,6 +58,8 @@ struct SceneRunOptions {
   // point of a million-point frame costs more than the step that made it.
   static constexpr std::size_t kDefaultSpacingSample = 100000;
   std::size_t spacing_sample = kDefaultSpacingSample;
+  // Probes: one tracer in every tracers_per_point / 4, and at most this many (0: no limit).
+  std::size_t max_probes = 100000;
 };
 
 struct SceneStepRecord {

@@ -29,10 +29,13 @@ template <int D>
 std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool);
 SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
 
-// A frame's spacing as `amls deform` reports it: of every point, or of an
-// even sample of a large set (the measure would otherwise cost more than the
-// step it measures). Each measured point's distance is to its nearest among
-// all the points, so a sample's figures are those of its points exactly.
+// A frame's spacing as `amls deform` reports it: of every point, or of a
+// sample of a large set (measuring every point, with an index of them all,
+// would cost more than the step that made the frame). The sample is the
+// points of blocks of the grid chosen by a hash of their place, about one
+// point in ceil(size / max_measured); each measured point's distance is to
+// its nearest among all the points, so a sample's figures are those of its
+// points exactly.
 struct SpacingSummary {
   SpacingStats h;             // min, median, max over the points measured, in units of h
   std::size_t measured = 0;   // points measured (0 for fewer than 2 points)
@@ -41,8 +44,8 @@ struct SpacingSummary {
   std::size_t above = 0;      // ... farther than kSpacingBandHigh h
   bool sampled() const { return measured < of && measured > 0; }
 };
-// Measures min(size, max_measured) points: point floor(k size / measured)
-// for k < measured, so the same points for any thread count. On the pool.
+// Every point when there are at most max_measured, else a sample of about
+// that many: the same points for any thread count and point order. On the pool.
 template <int D>
 SpacingSummary spacing_summary(const PointSet<D>& points, double h, std::size_t max_measured, ThreadPool& pool);
 
