@@ -26,12 +26,12 @@
 // Breakdown (the paper's Fig. 2(b)): without resampling, the surface S(P) has
 // broken at step k when it no longer covers the exact shape: F is undefined (no
 // point of P reaches it with enough weight) at some probe - one tracer in every
-// tracers_per_point / 4. Every step is probed. With resampling the final
-// surface is probed too, but holes there are reported, not taken as a
-// breakdown: the resampled surface cannot follow features of the exact shape
-// thinner than the grid (a slot pinched to a fraction of h), and the distances
-// say how much that loses. A resampling run breaks when its point set vanishes
-// or grows past 20 times its start.
+// tracers_per_point / 4 (sparser beyond SceneRunOptions::max_probes). Every
+// step is probed. With resampling the final surface is probed too, but holes
+// there are reported, not taken as a breakdown: the resampled surface cannot
+// follow features of the exact shape thinner than the grid (a slot pinched to
+// a fraction of h), and the distances say how much that loses. A resampling
+// run breaks when its point set vanishes or grows past 20 times its start.
 #include <cstddef>
 #include <functional>
 #include <string>
