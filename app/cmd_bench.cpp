@@ -42,14 +42,20 @@ nlohmann::json to_json(const BenchCase& c) {
           {"timings_s", timings},
           {"peak_memory_mib", c.peak_memory_mib},
           {"threads", c.threads},
+          // The case's whole run: its wall time and the share of it outside
+          // parallel loops (on one thread, the part more threads cannot share).
+          {"wall_s", c.run.wall},
+          {"parallel_s", c.run.parallel},
+          {"serial_share", c.run.serial_share()},
           {"result", c.result}};
 }
 
 void print_row(const BenchCase& c) {
   const PhaseTimes& t = c.timings;
-  std::printf("%-28s %8zu %8.3f %8.3f %8.3f %8.3f %8.3f %9.3f %11.3g %8.1f  %s\n", c.name.c_str(), c.points,
+  std::printf("%-28s %8zu %8.3f %8.3f %8.3f %8.3f %8.3f %9.3f %11.3g %8.1f %6.3f  %s\n", c.name.c_str(), c.points,
               seconds_of(t, "normals"), seconds_of(t, "function"), seconds_of(t, "resample"), seconds_of(t, "deform"),
-              seconds_of(t, "hash"), total_seconds(t), c.points_per_second(), c.peak_memory_mib, c.result.c_str());
+              seconds_of(t, "hash"), total_seconds(t), c.points_per_second(), c.peak_memory_mib, c.run.serial_share(),
+              c.result.c_str());
   std::fflush(stdout);
 }
 
@@ -60,7 +66,7 @@ void add_bench_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "bench",
       "the fixed benchmark suite: 2D vortex 512^2 exact and interpolated; one full step on 3D spheres of 50k, 200k "
-      "and 1M points; a 40-step drag on 200k and 1M points, resampled always or locally; Enright 128^3. Prints seconds per phase, points per second and peak memory per case");
+      "and 1M points; a 40-step drag on 200k and 1M points, resampled always or locally; Enright 128^3. Prints seconds per phase, points per second, peak memory and the serial share (of the case's wall time, outside parallel loops) per case");
   add_threads_option(*cmd, options->threads);
   cmd->add_option("--json", options->json_path, R"(write {"cases": [...]} to this file)");
   cmd->add_option("--only", options->only,
@@ -76,8 +82,8 @@ void add_bench_command(CLI::App& app) {
     }
     std::printf("amls bench, %d thread%s, %u hardware threads\n", options->threads, options->threads == 1 ? "" : "s",
                 std::thread::hardware_concurrency());
-    std::printf("%-28s %8s %8s %8s %8s %8s %8s %9s %11s %8s  %s\n", "case", "points", "normals", "function",
-                "resample", "deform", "hash", "total s", "points/s", "peak MiB", "result");
+    std::printf("%-28s %8s %8s %8s %8s %8s %8s %9s %11s %8s %6s  %s\n", "case", "points", "normals", "function",
+                "resample", "deform", "hash", "total s", "points/s", "peak MiB", "serial", "result");
     // Rows are printed as each case finishes, so a long suite shows progress.
     nlohmann::json cases = nlohmann::json::array();
     for (const BenchSpec& spec : specs) {

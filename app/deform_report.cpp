@@ -53,6 +53,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
   j["points_max"] = r.points_max;
   j["spacing_h"] = spacing_json(r.spacing_h);
   j["spacing_frames"] = r.frames_measured;
+  // Frames larger than the sample are measured on an even sample of their points.
+  j["spacing_sampled"] = {{"frames", r.spacing_sampled_frames}, {"sample", r.spacing_sample}};
   j["spacing_outside"] = {{"points", r.spacing_points},
                           {"below_" + kBelow, r.spacing_below},
                           {"above_" + kAbove, r.spacing_above},
@@ -84,6 +86,8 @@ nlohmann::json to_json(const SceneRunReport& r) {
                            {"spacing_above_" + kAbove, s.spacing_above},
                            {"failed_normal_fits", s.failed_normal_fits},
                            {"timings_s", timings_json(s.timings)}};
+    if (s.spacing_measured < s.points && s.spacing_measured > 0)
+      step["spacing_sampled"] = {{"points", s.spacing_measured}, {"of", s.points}};
     if (s.probed) step["probe"] = {{"holes", s.holes}, {"max_h", s.probe_max_h}};
     steps.push_back(std::move(step));
   }
@@ -107,6 +111,11 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
                 r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured,
                 r.resample && !local ? "resampled " : "", r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
   out << line;
+  if (r.spacing_sampled_frames > 0) {
+    std::snprintf(line, sizeof line, "spacing measured on an even sample of %zu points in the %zu frames larger than that\n",
+                  r.spacing_sample, r.spacing_sampled_frames);
+    out << line;
+  }
   std::snprintf(line, sizeof line, "spacing outside [%g h, %g h]: %zu below, %zu above, of %zu measured (%.3f %%)\n",
                 kSpacingBandLow, kSpacingBandHigh, r.spacing_below, r.spacing_above, r.spacing_points,
                 r.spacing_points > 0 ? 100.0 * static_cast<double>(r.spacing_below + r.spacing_above) /

@@ -17,6 +17,26 @@ TEST_CASE("bench: one step on a sampled sphere keeps about the requested number 
   CHECK(c.points_per_second() > 0.0);
   CHECK(c.peak_memory_mib > 0.0);
   CHECK(c.threads == 2);
+  // The step is mostly parallel loops, but not all of it (sorting the points' cells' runs, the crossings' choice).
+  REQUIRE(c.figures.size() == 1);
+  CHECK(c.figures[0].first == "step_serial_share");
+  CHECK(c.figures[0].second > 0.0);
+  CHECK(c.figures[0].second < 1.0);
+}
+
+TEST_CASE("bench: a case of the suite measures its whole run and the part of it in parallel loops") {
+  for (BenchSpec& spec : bench_suite(1)) {
+    if (spec.name != "3D sphere step, 50k points") continue;
+    const BenchCase c = spec.run();
+    // Set-up and step together outlast the step's phases; their loops are a part of the run.
+    CHECK(c.run.wall > total_seconds(c.timings));
+    CHECK(c.run.parallel > 0.0);
+    CHECK(c.run.parallel < c.run.wall);
+    CHECK(c.run.serial_share() > 0.0);
+    CHECK(c.run.serial_share() < 1.0);
+    return;
+  }
+  FAIL("the suite has no 50k sphere step");
 }
 
 TEST_CASE("bench: the drag, resampled always or locally, keeps the surface whole and near the exact shape") {
@@ -35,6 +55,8 @@ TEST_CASE("bench: the drag, resampled always or locally, keeps the surface whole
                          << r.mean_resampled());
     CHECK(r.step_seconds.size() == 6);
     CHECK(r.step_cpu_seconds.size() == 6);
+    CHECK(r.steps_parallel.parallel > 0.0);
+    CHECK(r.steps_parallel.parallel <= r.steps_parallel.wall);
     // Always maps step by step, as its tracers do; local maps from rest states, a new one at each
     // resample, and its tracers follow them: near the step-by-step shape (0.057 h here).
     if (mode == DragResample::always) CHECK(r.rest_map_drift_h == 0.0);

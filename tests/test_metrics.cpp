@@ -87,3 +87,81 @@ TEST_CASE("metrics: a curve with a gap is not one closed curve") {
   CHECK(e.scan.bad_rays > 100);
   CHECK_FALSE(e.scan.reason.empty());
 }
+
+TEST_CASE("metrics: a frame's spacing summary: every point's as the sorted spacings say, or an even sample's") {
+  // A sphere sampled unevenly enough that spacings differ, some outside [0.3 h, 1.5 h].
+  const double h = 0.01;
+  PointSet<3> points = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 20000);
+  for (std::size_t i = 0; i < 200; ++i) points.add(points.positions[i] + Vec<3>(0.001, 0.0, 0.0), points.normals[i]);
+  ThreadPool one(1), three(3);
+  const std::vector<double> every = nearest_neighbour_spacing_per_point(points, h, three);
+  SUBCASE("all points: the figures of the sorted spacings") {
+    std::vector<double> sorted = every;
+    std::sort(sorted.begin(), sorted.end());
+    const SpacingStats expected = spacing_stats_of(sorted);
+    const SpacingSummary s = spacing_summary(points, h, points.size(), three);
+    CHECK_FALSE(s.sampled());
+    CHECK(s.measured == points.size());
+    CHECK(s.of == points.size());
+    CHECK(s.h.min == expected.min);
+    CHECK(s.h.median == expected.median);
+    CHECK(s.h.max == expected.max);
+    const auto below = static_cast<std::size_t>(std::count_if(sorted.begin(), sorted.end(), [](double d) { return d < 0.3; }));
+    const auto above = static_cast<std::size_t>(std::count_if(sorted.begin(), sorted.end(), [](double d) { return d > 1.5; }));
+    CHECK(below >= 200);  // the added pairs, 0.1 h apart
+    CHECK(s.below == below);
+    CHECK(s.above == above);
+  }
+  SUBCASE("a sample: about one point in ceil(n / 1000), each at its exact spacing, the same for any thread count") {
+    const SpacingSummary s = spacing_summary(points, h, 1000, one);
+    CHECK(s.sampled());
+    CHECK(s.of == points.size());
+    // Blocks of about 110 points here, one in 21 of the 180: a handful of blocks (380 points).
+    CHECK(s.measured > 100);
+    CHECK(s.measured < 4000);
+    // Every figure is some point's exact spacing.
+    for (const double d : {s.h.min, s.h.median, s.h.max}) CHECK(std::find(every.begin(), every.end(), d) != every.end());
+    const SpacingSummary t = spacing_summary(points, h, 1000, three);
+    CHECK(t.measured == s.measured);
+    CHECK(t.h.min == s.h.min);
+    CHECK(t.h.median == s.h.median);
+    CHECK(t.h.max == s.h.max);
+    CHECK(t.below == s.below);
+    CHECK(t.above == s.above);
+  }
+  SUBCASE("a sample of points farther apart than 2 h: measured against every point") {
+    // A grid of points 3 h apart: no sampled point has a candidate within reach.
+    PointSet<3> sparse;
+    for (int i = 0; i < 20; ++i)
+      for (int j = 0; j < 20; ++j)
+        for (int k = 0; k < 20; ++k) sparse.add(3.0 * h * Vec<3>(i, j, k), Vec<3>::UnitZ());
+    const SpacingSummary s = spacing_summary(sparse, h, 1000, three);
+    CHECK(s.sampled());
+    CHECK(s.h.min == doctest::Approx(3.0));
+    CHECK(s.h.max == doctest::Approx(3.0));
+    CHECK(s.above == s.measured);
+  }
+  SUBCASE("fewer than two points measure nothing") {
+    PointSet<3> lone;
+    lone.add(Vec<3>::Zero(), Vec<3>::UnitZ());
+    const SpacingSummary s = spacing_summary(lone, h, 1000, three);
+    CHECK(s.measured == 0);
+    CHECK(s.of == 1);
+    CHECK_FALSE(s.sampled());
+  }
+}
+
+TEST_CASE("metrics: nearest distances on a pool have the same bits for any thread count") {
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 30000);
+  const PointSet<3> bigger = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.31, 5000);
+  const DistanceStats serial = nearest_distance_stats(sphere.positions, bigger.positions, 0.01);
+  CHECK(serial.count == 30000);
+  CHECK(serial.mean > 1.0);  // at least the radii's 0.01 apart, 1 h
+  for (const int threads : {2, 3, 8}) {
+    ThreadPool pool(threads);
+    const DistanceStats d = nearest_distance_stats(sphere.positions, bigger.positions, 0.01, pool);
+    CHECK(d.count == serial.count);
+    CHECK(d.mean == serial.mean);
+    CHECK(d.max == serial.max);
+  }
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <random>
+#include <vector>
 
 #include "core/geometry/point_index.hpp"
 
@@ -94,6 +95,35 @@ void check_same_order_dense_and_sparse(double cell, unsigned seed) {
 TEST_CASE("the dense and the sparse cell table visit the same points in the same order") {
   check_same_order_dense_and_sparse<2>(0.05, 5);
   check_same_order_dense_and_sparse<3>(0.1, 6);
+}
+
+TEST_CASE("the index built on a pool has the same order and the same cells for any thread count") {
+  // Enough points for the pooled sort; a far point makes the sparse table.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const bool far : {false, true}) {
+    std::vector<Vec<3>> pts(60000);
+    for (auto& p : pts) p = Vec<3>(u(rng), u(rng), u(rng));
+    if (far) pts[31337] = Vec<3>::Constant(1e3);
+    PointIndex<3> serial;
+    serial.build(pts, Vec<3>::Zero(), 0.02);
+    for (const int threads : {2, 3, 8}) {
+      ThreadPool pool(threads);
+      PointIndex<3> index;
+      // Twice: the second build reuses the first's storage.
+      for (int build = 0; build < 2; ++build) {
+        index.build(pts, Vec<3>::Zero(), 0.02, pool);
+        CHECK(index.uses_dense_table() == !far);
+        CHECK(index.order() == serial.order());
+        for (const Vec<3>& x : {Vec<3>(0.5, 0.5, 0.5), Vec<3>(0.01, 0.99, 0.3), Vec<3>(1e3, 1e3, 1e3)}) {
+          std::vector<std::uint32_t> expected, found;
+          serial.gather(x, x, 0.05, expected);
+          index.gather(x, x, 0.05, found);
+          CHECK(found == expected);
+        }
+      }
+    }
+  }
 }
 
 TEST_CASE("the index rejects non-finite points with a message naming the point") {

@@ -69,3 +69,27 @@ TEST_CASE("radix_sort_by_key: a scratch buffer left from a larger sort is reused
   radix_sort_by_key(items, scratch);
   CHECK(items == Items{{0, 4}, {3, 1}, {3, 3}, {5, 0}, {9, 2}});
 }
+
+TEST_CASE("radix_sort_by_key on a pool: the serial sort's order for any thread count, whole blocks or in pieces") {
+  std::mt19937_64 random(17);
+  // Above the size the pooled sort sorts serially below; keys that differ
+  // in a few bytes (as Morton codes of nearby cells) and in all of them.
+  std::vector<std::uint64_t> few_bytes(70001), all_bytes(40000);
+  for (auto& k : few_bytes) k = (random() % 5000) << 12 | 0x3;
+  for (auto& k : all_bytes) k = random();
+  for (const std::vector<std::uint64_t>* keys : {&few_bytes, &all_bytes}) {
+    Items expected = numbered(*keys), scratch;
+    std::stable_sort(expected.begin(), expected.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const int threads : {1, 2, 3, 8}) {
+      ThreadPool pool(threads);
+      Items items = numbered(*keys);
+      radix_sort_by_key(items, scratch, pool);
+      CHECK(items == expected);
+      // Under a cancellation check each block runs as several sub-ranges.
+      const CancelScope pieces(pool, [] { return false; });
+      items = numbered(*keys);
+      radix_sort_by_key(items, scratch, pool);
+      CHECK(items == expected);
+    }
+  }
+}

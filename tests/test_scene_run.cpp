@@ -123,6 +123,37 @@ TEST_CASE("scene run: local resamples where strained, every frame counts, and st
   CHECK(r.spacing_h.max <= 2.0);
 }
 
+TEST_CASE("scene run: frames larger than the spacing sample are measured on it, within the whole frames' extremes") {
+  const Scene<2> scene = short_clover();
+  SceneRunOptions options;
+  options.tracers_per_point = 4;
+  const SceneRunReport whole = run_scene<2>(scene, options);
+  CHECK(whole.spacing_sampled_frames == 0);
+  CHECK(whole.spacing_sample == SceneRunOptions::kDefaultSpacingSample);
+  options.spacing_sample = 100;
+  const SceneRunReport r = run_scene<2>(scene, options);
+  REQUIRE(r.per_step.size() == whole.per_step.size());
+  CHECK(r.spacing_sampled_frames == r.per_step.size());  // every frame has more than 100 points
+  std::size_t measured = 0;
+  for (std::size_t k = 0; k < r.per_step.size(); ++k) {
+    const SceneStepRecord& sampled = r.per_step[k];
+    const SceneStepRecord& all = whole.per_step[k];
+    CHECK(sampled.points == all.points);  // the measure changes nothing of the run
+    CHECK(all.spacing_measured == all.points);
+    // About one point in 3 (ceil(points / 100)), by blocks of the grid.
+    CHECK(sampled.spacing_measured > 30);
+    CHECK(sampled.spacing_measured < all.points);
+    if (sampled.resampled) measured += sampled.spacing_measured;  // the frames that count (`always`)
+    // Each sampled point's spacing is its exact one, so the sample's extremes lie within the frame's.
+    CHECK(sampled.spacing_h.min >= all.spacing_h.min);
+    CHECK(sampled.spacing_h.max <= all.spacing_h.max);
+    CHECK(sampled.spacing_below <= all.spacing_below);
+    CHECK(sampled.spacing_above <= all.spacing_above);
+  }
+  CHECK(r.spacing_points == measured);
+  CHECK(r.distance_to_exact_h.mean == whole.distance_to_exact_h.mean);
+}
+
 TEST_CASE("scene run: every:K resamples steps 0, K, 2K, ... and the final point set when it falls on one") {
   const Scene<2> scene = short_clover();
   SceneRunOptions options;

@@ -1,10 +1,13 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "core/util/block_join.hpp"
+#include "core/util/parallel_stopwatch.hpp"
 #include "core/util/thread_pool.hpp"
 
 using namespace amls;
@@ -209,4 +212,74 @@ TEST_CASE("pools start with the default cancellation check; a CancelScope puts t
   }
   stop = true;
   CHECK_THROWS_AS(record_calls(pool, 100), Cancelled);  // the default check again, not none
+}
+
+namespace {
+
+// Deterministic busy work: a sum no compiler can fold away.
+double busy_sum(std::size_t begin, std::size_t end) {
+  double sum = 0.0;
+  for (std::size_t i = begin; i < end; ++i) sum += std::sqrt(static_cast<double>(i) + 0.5);
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("serial share: work outside parallel loops is all serial, and a loop of one item is serial") {
+  ThreadPool pool(2);
+  ParallelStopwatch clock;
+  volatile double sink = busy_sum(0, 2000000);
+  pool.parallel_for(1, [&](std::size_t b, std::size_t e, int) { sink = sink + busy_sum(b, e * 2000000); });
+  const ParallelLap lap = clock.lap();
+  CHECK(lap.parallel == 0.0);
+  CHECK(lap.wall > 0.0);
+  CHECK(lap.serial_share() == 1.0);
+}
+
+TEST_CASE("serial share: a run that is all one parallel loop has a share near 0, on one thread as on three") {
+  for (const int threads : {1, 3}) {
+    ThreadPool pool(threads);
+    std::vector<double> sums(static_cast<std::size_t>(threads), 0.0);
+    ParallelStopwatch clock;
+    pool.parallel_for(30000000, [&](std::size_t b, std::size_t e, int block) {
+      sums[static_cast<std::size_t>(block)] += busy_sum(b, e);
+    });
+    const ParallelLap lap = clock.lap();
+    CHECK(sums[0] > 0.0);
+    CHECK(lap.parallel > 0.0);
+    CHECK(lap.parallel <= lap.wall);
+    // Outside the loop are two clock reads: a share of 0.5 would take a pause
+    // as long as the loop's work between them.
+    CHECK(lap.serial_share() < 0.5);
+  }
+}
+
+TEST_CASE("serial share: a loop run inside another loop's body counts once") {
+  // The outer pool has one thread, so its body, and the inner loop, run on the counting thread.
+  ThreadPool outer(1), inner(2);
+  ParallelStopwatch clock;
+  std::vector<double> sums(2, 0.0);
+  // All the work is in the inner loop; counted twice it would exceed the wall time.
+  outer.parallel_for(2, [&](std::size_t, std::size_t, int) {
+    inner.parallel_for(20000000, [&](std::size_t ib, std::size_t ie, int block) {
+      sums[static_cast<std::size_t>(block)] += busy_sum(ib, ie);
+    });
+  });
+  const ParallelLap lap = clock.lap();
+  CHECK(lap.parallel > 0.0);
+  CHECK(lap.parallel <= lap.wall);
+}
+
+TEST_CASE("join_blocks joins the blocks' lists in block order and keeps none of the old contents") {
+  for (const int threads : {1, 2, 5}) {
+    ThreadPool pool(threads);
+    std::vector<OwnCacheLine<std::vector<std::size_t>>> parts(static_cast<std::size_t>(threads));
+    pool.parallel_for(1001, [&](std::size_t b, std::size_t e, int block) {
+      for (std::size_t i = b; i < e; ++i) parts[static_cast<std::size_t>(block)].value.push_back(i * i);
+    });
+    std::vector<std::size_t> out(5000, 7);  // longer than the result: it must shrink
+    join_blocks(parts, out, pool);
+    REQUIRE(out.size() == 1001);
+    for (std::size_t i = 0; i < out.size(); ++i) CHECK(out[i] == i * i);
+  }
 }

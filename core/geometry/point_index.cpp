@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/util/block_join.hpp"
 #include "core/util/radix_sort.hpp"
 
 namespace amls {
@@ -78,39 +79,70 @@ void PointIndex<D>::build(const std::vector<Vec<D>>& positions, const Vec<D>& or
   }
   // Sorting by code, ids ascending within a code, makes the order, and so
   // every query's order, deterministic.
-  radix_sort_by_key(keyed_, sort_scratch_);
+  radix_sort_by_key(keyed_, sort_scratch_, pool);
 
-  positions_.resize(keyed_.size());
-  ids_.resize(keyed_.size());
-  cell_runs_.clear();
-  for (std::size_t k = 0; k < keyed_.size(); ++k) {
-    ids_[k] = keyed_[k].second;
-    positions_[k] = positions[keyed_[k].second];
-    // A code names one cell: a run starts where the code changes.
-    if (k == 0 || keyed_[k].first != keyed_[k - 1].first)
-      cell_runs_.push_back({cells.cell_of(positions_[k]), Run{static_cast<std::uint32_t>(k), 0}});
-    cell_runs_.back().second.end = static_cast<std::uint32_t>(k + 1);
-  }
-  fill_cell_table();
+  // The points in that order, and a run per cell: each block lists the runs
+  // that start in it (a code names one cell, so a run starts where the code
+  // changes), and a run ends where the next one starts.
+  const std::size_t n = keyed_.size();
+  positions_.resize(n);
+  ids_.resize(n);
+  block_runs_.resize(static_cast<std::size_t>(pool.threads()));
+  for (auto& runs : block_runs_) runs.value.clear();
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+    std::vector<std::pair<IVec<D>, Run>>& runs = block_runs_[static_cast<std::size_t>(block)].value;
+    for (std::size_t k = begin; k < end; ++k) {
+      ids_[k] = keyed_[k].second;
+      positions_[k] = positions[keyed_[k].second];
+      if (k == 0 || keyed_[k].first != keyed_[k - 1].first)
+        runs.push_back({cells.cell_of(positions_[k]), Run{static_cast<std::uint32_t>(k), 0}});
+    }
+  });
+  join_blocks(block_runs_, cell_runs_, pool);
+  for (std::size_t r = 0; r < cell_runs_.size(); ++r)
+    cell_runs_[r].second.end = r + 1 < cell_runs_.size() ? cell_runs_[r + 1].second.begin : static_cast<std::uint32_t>(n);
+  fill_cell_table(pool);
 }
 
 template <int D>
-void PointIndex<D>::fill_cell_table() {
+void PointIndex<D>::fill_cell_table(ThreadPool& pool) {
   runs_.clear();
-  dense_.clear();
-  if (cell_runs_.empty()) return;
+  if (cell_runs_.empty()) {
+    dense_.clear();
+    return;
+  }
+  // The box of the cells, per block and then over the blocks.
+  std::vector<OwnCacheLine<std::pair<IVec<D>, IVec<D>>>> boxes(
+      static_cast<std::size_t>(pool.threads()), {{cell_runs_.front().first, cell_runs_.front().first}});
+  pool.parallel_for(cell_runs_.size(), [&](std::size_t begin, std::size_t end, int block) {
+    auto& [lo, hi] = boxes[static_cast<std::size_t>(block)].value;
+    for (std::size_t r = begin; r < end; ++r) {
+      lo = lo.cwiseMin(cell_runs_[r].first);
+      hi = hi.cwiseMax(cell_runs_[r].first);
+    }
+  });
   dense_lo_ = dense_hi_ = cell_runs_.front().first;
-  for (const auto& [cell, run] : cell_runs_) {
-    dense_lo_ = dense_lo_.cwiseMin(cell);
-    dense_hi_ = dense_hi_.cwiseMax(cell);
+  for (const auto& box : boxes) {
+    dense_lo_ = dense_lo_.cwiseMin(box.value.first);
+    dense_hi_ = dense_hi_.cwiseMax(box.value.second);
   }
   // In floating point: the box of far-flung points can overflow any integer.
   double box_cells = 1.0;
   for (int a = 0; a < D; ++a) box_cells *= static_cast<double>(dense_hi_[a] - dense_lo_[a] + 1);
   if (box_cells <= kDenseCellsPerPoint * static_cast<double>(positions_.size()) + kDenseMinCells) {
-    dense_.assign(static_cast<std::size_t>(box_cells), Run{});
-    for (const auto& [cell, run] : cell_runs_) dense_[dense_slot(cell)] = run;
+    // Tens of megabytes for a million points: emptied and filled on the pool.
+    // The table is not cleared between builds, so that resize() constructs
+    // (serially) only the cells it adds.
+    dense_.resize(static_cast<std::size_t>(box_cells));
+    pool.parallel_for(dense_.size(), [&](std::size_t begin, std::size_t end, int) {
+      std::fill(dense_.begin() + static_cast<std::ptrdiff_t>(begin), dense_.begin() + static_cast<std::ptrdiff_t>(end),
+                Run{});
+    });
+    pool.parallel_for(cell_runs_.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t r = begin; r < end; ++r) dense_[dense_slot(cell_runs_[r].first)] = cell_runs_[r].second;
+    });
   } else {
+    dense_.clear();  // (empty: the map is in use)
     for (const auto& [cell, run] : cell_runs_) *runs_.try_emplace(Grid<D>::key(cell)).first = run;
   }
 }

@@ -113,7 +113,7 @@ class PointIndex {
     std::uint32_t end = 0;
   };
 
-  void fill_cell_table();
+  void fill_cell_table(ThreadPool& pool);
 
   // Calls fn(run) for every non-empty cell in [lo, hi], in for_each_index_in_box's order.
   template <typename Fn>
@@ -158,8 +158,10 @@ class PointIndex {
   FlatHashMap<Run> runs_;
   std::vector<Run> dense_;
   IVec<D> dense_lo_ = IVec<D>::Zero(), dense_hi_ = IVec<D>::Zero();
-  // Each run's cell, kept between builds like keyed_.
+  // Each run's cell, kept between builds like keyed_, and the runs each
+  // block of the build found.
   std::vector<std::pair<IVec<D>, Run>> cell_runs_;
+  std::vector<OwnCacheLine<std::vector<std::pair<IVec<D>, Run>>>> block_runs_;
   // (Morton code of the cell, id) of every point, and the sort's working
   // space: kept so that rebuilding every step does not allocate.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed_, sort_scratch_;

@@ -11,6 +11,7 @@
 
 #include "core/resample/segment_root.hpp"
 #include "core/surface/local_support.hpp"
+#include "core/util/block_join.hpp"
 
 namespace amls {
 
@@ -202,8 +203,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
       }
     }
   });
-  crossings_.clear();
-  for (const auto& part : found) crossings_.insert(crossings_.end(), part.value.begin(), part.value.end());
+  join_blocks(found, crossings_, pool);
   stats_.crossings = crossings_.size();
 }
 
@@ -381,12 +381,16 @@ PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant varian
   keep_closest_crossings();
 
   PointSet<D> out;
-  out.reserve(crossings_.size());
-  for (const Crossing& x : crossings_) {
-    Vec<D> q = grid.vertex_position(field_.vertex_of(x.from));
-    q[x.axis] += x.t * h;
-    out.add(q, x.normal);
-  }
+  out.positions.resize(crossings_.size());
+  out.normals.resize(crossings_.size());
+  pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const Crossing& x = crossings_[k];
+      out.positions[k] = grid.vertex_position(field_.vertex_of(x.from));
+      out.positions[k][x.axis] += x.t * h;
+      out.normals[k] = x.normal;
+    }
+  });
   append_rim(rim, h, out);
   stats_.rim_samples = surface.rim().size();
   stats_.beyond_rim += rim.stats.crowding;

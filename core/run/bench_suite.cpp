@@ -32,6 +32,16 @@ BenchCase from_flow_test(const std::string& name, const FlowTestReport& r) {
   return c;
 }
 
+// The case `make` builds, with its run measured.
+BenchSpec measured(std::string name, std::function<BenchCase()> make) {
+  return {name, [make = std::move(make)] {
+            ParallelStopwatch clock;
+            BenchCase c = make();
+            c.run = clock.lap();
+            return c;
+          }};
+}
+
 std::string sphere_step_name(std::size_t points) {
   return "3D sphere step, " + std::to_string(points / 1000) + "k points";
 }
@@ -82,7 +92,8 @@ BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
                {"exact_to_surface_mean_h", r.exact_to_surface_mean_h},
                {"exact_to_surface_max_h", r.exact_to_surface_max_h},
                {"holes", static_cast<double>(r.holes)},
-               {"rest_map_drift_h", r.rest_map_drift_h}};
+               {"rest_map_drift_h", r.rest_map_drift_h},
+               {"steps_serial_share", r.steps_parallel.serial_share()}};
   if (mode == DragResample::local) {
     c.figures.emplace_back("finish_ms", 1e3 * r.finish_seconds);
     c.figures.emplace_back("interpolated_to_surface_mean_h", r.interpolated_to_surface_mean_h);
@@ -104,7 +115,9 @@ BenchCase bench_sphere_step(std::size_t points, int threads) {
   surface.set_points(sample_sphere(center, radius, points));
   surface.resample_only();
   const FlowDeformation<3> rotation(std::make_shared<RigidRotation<3>>(center, 1.0, Vec<3>::UnitZ()), 1);
+  ParallelStopwatch clock;
   const StepStats stats = surface.step(rotation, 0.0, 0.01);
+  const ParallelLap step = clock.lap();
   BenchCase c;
   c.name = sphere_step_name(points);
   c.points = c.points_processed = stats.points_before;
@@ -112,6 +125,7 @@ BenchCase bench_sphere_step(std::size_t points, int threads) {
   c.peak_memory_mib = peak_memory_mib();
   c.threads = threads;
   c.result = std::to_string(stats.points_after) + " points after, h = " + std::to_string(h);
+  c.figures = {{"step_serial_share", step.serial_share()}};
   return c;
 }
 
@@ -119,28 +133,28 @@ std::vector<BenchSpec> bench_suite(int threads) {
   std::vector<BenchSpec> specs;
   for (const FlowVariant variant : {FlowVariant::exact, FlowVariant::interpolated}) {
     const std::string name = std::string("2D vortex 512^2 ") + to_string(variant);
-    specs.push_back({name, [name, variant, threads] {
+    specs.push_back(measured(name, [name, variant, threads] {
                        FlowTestConfig vortex;
                        vortex.grid = 512;
                        vortex.threads = threads;
                        vortex.variant = variant;
                        reset_peak_memory();
                        return from_flow_test(name, run_vortex_test(vortex).report);
-                     }});
+                     }));
   }
   for (const std::size_t n : {50000u, 200000u, 1000000u})
-    specs.push_back({sphere_step_name(n), [n, threads] { return bench_sphere_step(n, threads); }});
+    specs.push_back(measured(sphere_step_name(n), [n, threads] { return bench_sphere_step(n, threads); }));
   for (const std::size_t n : {200000u, 1000000u})
     for (const DragResample mode : {DragResample::always, DragResample::local})
-      specs.push_back({drag_name(n, mode), [n, mode, threads] { return bench_drag(n, mode, threads); }});
+      specs.push_back(measured(drag_name(n, mode), [n, mode, threads] { return bench_drag(n, mode, threads); }));
   const std::string enright_name = "3D Enright 128^3 exact";
-  specs.push_back({enright_name, [enright_name, threads] {
+  specs.push_back(measured(enright_name, [enright_name, threads] {
                      FlowTestConfig enright;
                      enright.grid = 128;
                      enright.threads = threads;
                      reset_peak_memory();
                      return from_flow_test(enright_name, run_enright_test(enright).report);
-                   }});
+                   }));
   return specs;
 }
 

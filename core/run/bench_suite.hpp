@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/run/deforming_surface.hpp"
+#include "core/util/parallel_stopwatch.hpp"
 #include "core/util/phase_times.hpp"
 
 namespace amls {
@@ -20,6 +21,10 @@ struct BenchCase {
   PhaseTimes timings;                // normals, function, resample, deform, hash
   double peak_memory_mib = 0.0;      // peak resident memory during this case
   int threads = 1;
+  // The whole case as the suite runs it (set-up, the timed loop, its
+  // measures): wall time and the part of it inside parallel loops. Its
+  // serial share on one thread bounds what more threads can gain.
+  ParallelLap run;
   std::string result;                // the case's accuracy figure, in words
   // Named figures of the case, for the JSON report (the drag cases' step times and quality).
   std::vector<std::pair<std::string, double>> figures;
@@ -40,7 +45,8 @@ struct BenchSpec {
   std::function<BenchCase()> run;
 };
 
-// The suite's cases in order, none run yet.
+// The suite's cases in order, none run yet. Each measures its own run
+// (BenchCase::run) on the thread that calls it.
 std::vector<BenchSpec> bench_suite(int threads);
 
 }  // namespace amls

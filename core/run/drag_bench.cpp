@@ -124,10 +124,12 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     report.points_initial = surface.points().size();
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
-      Stopwatch clock;
+      ParallelStopwatch clock;
       const double cpu = cpu_seconds();
       const StepStats stats = surface.step(map, 0.0, 1.0);
-      report.step_seconds.push_back(clock.lap());
+      const ParallelLap lap = clock.lap();
+      report.step_seconds.push_back(lap.wall);
+      report.steps_parallel += lap;
       report.step_cpu_seconds.push_back(cpu_seconds() - cpu);
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;
@@ -146,10 +148,12 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     std::vector<Vec<3>> tracers_rest_handles = drag_handles(kCenter, kRadius, pull, 0);
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
-      Stopwatch clock;
+      ParallelStopwatch clock;
       const double cpu = cpu_seconds();
       const LocalStepStats stats = surface.step(map);
-      report.step_seconds.push_back(clock.lap());
+      const ParallelLap lap = clock.lap();
+      report.step_seconds.push_back(lap.wall);
+      report.steps_parallel += lap;
       report.step_cpu_seconds.push_back(cpu_seconds() - cpu);
       report.resampled.push_back(stats.resample.inserted);
       report.timings += stats.timings;

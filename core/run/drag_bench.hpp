@@ -21,6 +21,7 @@
 
 #include "core/run/deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
+#include "core/util/parallel_stopwatch.hpp"
 
 namespace amls {
 
@@ -51,6 +52,7 @@ struct DragBenchReport {
   std::vector<double> step_cpu_seconds;
   std::vector<std::size_t> resampled;  // per step: points made by the resampler
   PhaseTimings timings;                // summed over the steps
+  ParallelLap steps_parallel;          // the steps' wall time, and the part of it in parallel loops
   double median_ms() const;
   double max_ms() const;
   double cpu_median_ms() const;

@@ -24,18 +24,31 @@ void validate(const SceneRunOptions& options) {
                                 std::to_string(options.tracers_per_point));
 }
 
-// Undefined F at the probes, and the largest |F| / h at the others.
+// Undefined F at the probes, and the largest |F| / h at the others, on the pool.
 template <int D>
-void probe(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& probes, std::size_t& holes, double& max_h) {
+void probe(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& probes, ThreadPool& pool, std::size_t& holes,
+           double& max_h) {
+  struct Found {
+    std::size_t holes = 0;
+    double max_h = 0.0;
+  };
+  std::vector<OwnCacheLine<Found>> found(static_cast<std::size_t>(pool.threads()));
+  pool.parallel_for(probes.size(), [&](std::size_t begin, std::size_t end, int block) {
+    Found here;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Evaluation<D> e = surface.evaluate(probes[i]);
+      if (!e.defined) ++here.holes;
+      else here.max_h = std::max(here.max_h, std::abs(e.value) / surface.grid().spacing());
+    }
+    Found& block_found = found[static_cast<std::size_t>(block)].value;
+    block_found.holes += here.holes;
+    block_found.max_h = std::max(block_found.max_h, here.max_h);
+  });
   holes = 0;
   max_h = 0.0;
-  for (const Vec<D>& x : probes) {
-    const Evaluation<D> e = surface.evaluate(x);
-    if (!e.defined) {
-      ++holes;
-      continue;
-    }
-    max_h = std::max(max_h, std::abs(e.value) / surface.grid().spacing());
+  for (const auto& f : found) {
+    holes += f.value.holes;
+    max_h = std::max(max_h, f.value.max_h);
   }
 }
 
@@ -108,6 +121,7 @@ class SceneRunner {
     report_.resample = options_.resample;
     report_.policy = options_.policy;
     report_.threads = options_.threads;
+    report_.spacing_sample = options_.spacing_sample;
     report_.stages = scene_.history.stages.size();
     report_.steps_planned = scene_.history.total_steps();
     if (options_.max_steps > 0) report_.steps_planned = std::min(report_.steps_planned, options_.max_steps);
@@ -121,6 +135,10 @@ class SceneRunner {
     tracers_ = std::move(shape.tracers);
     report_.tracers = tracers_.size();
     probe_stride_ = static_cast<std::size_t>(std::max(1.0, std::round(options_.tracers_per_point / 4.0)));
+    // A large run probes every k-th tracer, k as small as keeps the probes
+    // to max_probes: F at a million probes costs a whole resample's normals.
+    if (options_.max_probes > 0)
+      probe_stride_ = std::max(probe_stride_, (tracers_.size() + options_.max_probes - 1) / options_.max_probes);
     report_.probes = (tracers_.size() + probe_stride_ - 1) / probe_stride_;
 
     const Grid<D> grid = resampling_grid(shape.points, scene_.h(), scene_.radius_factor);
@@ -153,15 +171,15 @@ class SceneRunner {
     const PointSet<D>& points = this->points();
     record.step = step;
     record.points = points.size();
-    const std::vector<double> spacings = nearest_neighbour_spacings(points, report_.h);
-    record.spacing_h = spacing_stats_of(spacings);
-    record.spacing_below = static_cast<std::size_t>(
-        std::lower_bound(spacings.begin(), spacings.end(), kSpacingBandLow) - spacings.begin());
-    record.spacing_above =
-        static_cast<std::size_t>(spacings.end() - std::upper_bound(spacings.begin(), spacings.end(), kSpacingBandHigh));
+    const SpacingSummary spacing = spacing_summary(points, report_.h, options_.spacing_sample, pool());
+    record.spacing_h = spacing.h;
+    record.spacing_measured = spacing.measured;
+    record.spacing_below = spacing.below;
+    record.spacing_above = spacing.above;
+    if (spacing.sampled()) ++report_.spacing_sampled_frames;
     const bool counted = !options_.resample || record.resampled || local_.has_value();
     if (counted) {
-      report_.spacing_points += spacings.size();
+      report_.spacing_points += spacing.measured;
       report_.spacing_below += record.spacing_below;
       report_.spacing_above += record.spacing_above;
     }
@@ -239,7 +257,7 @@ class SceneRunner {
     record.failed_normal_fits = normals.failed();
     Stopwatch clock;
     record.probed = true;
-    probe(surface_->surface(), probes(), record.holes, record.probe_max_h);
+    probe(surface_->surface(), probes(), pool(), record.holes, record.probe_max_h);
     report_.measure_seconds += clock.lap();
     measure_frame(step, record);
     if (record.holes > 0)
@@ -255,13 +273,13 @@ class SceneRunner {
     Stopwatch clock;
     if (!points.empty()) {
       if (local_) {
-        probe(local_->fitted_surface(), probes(), report_.final_holes, report_.final_probe_max_h);
+        probe(local_->fitted_surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
       } else {
         surface_->refresh_normals();
-        probe(surface_->surface(), probes(), report_.final_holes, report_.final_probe_max_h);
+        probe(surface_->surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
       }
-      report_.distance_to_exact_h = nearest_distance_stats(points.positions, tracers_.positions, report_.h);
-      report_.exact_to_points_h = nearest_distance_stats(tracers_.positions, points.positions, report_.h);
+      report_.distance_to_exact_h = nearest_distance_stats(points.positions, tracers_.positions, report_.h, pool());
+      report_.exact_to_points_h = nearest_distance_stats(tracers_.positions, points.positions, report_.h, pool());
     }
     if (report_.final_holes > 0 && !options_.resample)
       mark_broken(report_.steps, "the final surface does not cover the exact shape: F is undefined at " +

@@ -26,12 +26,12 @@
 // Breakdown (the paper's Fig. 2(b)): without resampling, the surface S(P) has
 // broken at step k when it no longer covers the exact shape: F is undefined (no
 // point of P reaches it with enough weight) at some probe - one tracer in every
-// tracers_per_point / 4. Every step is probed. With resampling the final
-// surface is probed too, but holes there are reported, not taken as a
-// breakdown: the resampled surface cannot follow features of the exact shape
-// thinner than the grid (a slot pinched to a fraction of h), and the distances
-// say how much that loses. A resampling run breaks when its point set vanishes
-// or grows past 20 times its start.
+// tracers_per_point / 4 (sparser beyond SceneRunOptions::max_probes). Every
+// step is probed. With resampling the final surface is probed too, but holes
+// there are reported, not taken as a breakdown: the resampled surface cannot
+// follow features of the exact shape thinner than the grid (a slot pinched to
+// a fraction of h), and the distances say how much that loses. A resampling
+// run breaks when its point set vanishes or grows past 20 times its start.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -53,6 +53,13 @@ struct SceneRunOptions {
   int threads = 1;
   double tracers_per_point = 50.0;
   std::size_t max_steps = 0;  // stop after this many steps (0: the whole history)
+  // A frame of more points has its spacing measured on an even sample of
+  // this many (core/surface/metrics.hpp, spacing_summary): measuring every
+  // point of a million-point frame costs more than the step that made it.
+  static constexpr std::size_t kDefaultSpacingSample = 100000;
+  std::size_t spacing_sample = kDefaultSpacingSample;
+  // Probes: one tracer in every tracers_per_point / 4, and at most this many (0: no limit).
+  std::size_t max_probes = 100000;
 };
 
 struct SceneStepRecord {
@@ -61,6 +68,7 @@ struct SceneStepRecord {
   std::size_t points = 0;  // in the frame of this step
   bool resampled = false;  // the frame is a resample's (R_k), made in this record's step
   SpacingStats spacing_h;  // of the frame's points, in units of h
+  std::size_t spacing_measured = 0;  // the points spacing_h is of: all, or a sample of a large frame
   std::size_t spacing_below = 0;  // points whose nearest neighbour is nearer than 0.3 h
   std::size_t spacing_above = 0;  // ... farther than 1.5 h
   PhaseTimings timings;    // of the work that made the frame (resample) and of the deformation after it
@@ -109,6 +117,8 @@ struct SceneRunReport {
   // largest maximum.
   SpacingStats spacing_h;
   std::size_t frames_measured = 0;
+  std::size_t spacing_sample = 0;          // SceneRunOptions::spacing_sample
+  std::size_t spacing_sampled_frames = 0;  // frames (counted or not) measured on a sample of their points
   // Over the same frames: points measured, and those with a nearest neighbour
   // nearer than 0.3 h or farther than 1.5 h (the band a well-sampled surface keeps).
   std::size_t spacing_points = 0;

@@ -56,18 +56,22 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   wide_ids_.clear();
   supports_measured_ = false;
   index_.build(points_.positions, grid_.origin(), radius_, pool);
-  pool.poll_cancel();  // the build's sort and the copy below are serial: a stop between them
   // Reorder the points by cell, so that a neighbourhood is a few contiguous runs.
   const std::vector<std::uint32_t>& order = index_.order();
   PointSet<D> sorted;
-  sorted.reserve(order.size());
-  for (const std::uint32_t id : order) sorted.add(points_.positions[id], points_.normals[id]);
+  sorted.positions.resize(order.size());
+  sorted.normals.resize(order.size());
+  std::vector<double> radii(given_radii_ ? order.size() : 0);
+  pool.parallel_for(order.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      sorted.positions[k] = points_.positions[order[k]];
+      sorted.normals[k] = points_.normals[order[k]];
+    }
+    if (given_radii_)
+      for (std::size_t k = begin; k < end; ++k) radii[k] = (*given_radii_)[order[k]];
+  });
   points_ = std::move(sorted);
-  if (given_radii_) {
-    std::vector<double> radii(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) radii[k] = (*given_radii_)[order[k]];
-    given_radii_ = std::move(radii);
-  }
+  if (given_radii_) given_radii_ = std::move(radii);
   index_.renumber_in_cell_order();
   hashed_ = true;
   ready_ = false;

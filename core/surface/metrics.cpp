@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "core/math/root_finding.hpp"
+#include "core/surface/spacing_band.hpp"
+#include "core/util/block_join.hpp"
 
 namespace amls {
 
@@ -34,21 +36,41 @@ double nearest_squared(const PointIndex<D>& index, const std::vector<Vec<D>>& po
   return best2;
 }
 
+// The cells of the indexes that nearest-neighbour searches use, in h, and
+// the search's first radius. Cells twice the radius hold four times the
+// points (in 2D: twice) of cells as wide as it, but a search visits at most
+// 2^D of them instead of 3^D, for about the same points read; and a dense
+// cell table over a million points' box is 8 times smaller (in 3D: 30 MB,
+// not 240), so the index is quicker to build.
+constexpr double kSearchCell = 4.0;
+constexpr double kSearchRadius = 2.0;
+
+// The nearest-neighbour distance in h of points pick(0), ..., pick(count - 1)
+// to the others, on the pool.
+template <int D, typename Pick>
+std::vector<double> nearest_spacings_of(const PointSet<D>& points, double h, std::size_t count, Pick pick,
+                                        ThreadPool& pool) {
+  if (points.size() < 2) return {};
+  PointIndex<D> index;
+  index.build(points.positions, Vec<D>::Zero(), kSearchCell * h, pool);
+  std::vector<double> nearest(count);
+  pool.parallel_for(count, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = pick(k);
+      nearest[k] =
+          std::sqrt(nearest_squared(index, points.positions, points.positions[i], kSearchRadius * h,
+                                    static_cast<std::uint32_t>(i))) /
+          h;
+    }
+  });
+  return nearest;
+}
+
 }  // namespace
 
 template <int D>
 std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool) {
-  if (points.size() < 2) return {};
-  PointIndex<D> index;
-  index.build(points.positions, Vec<D>::Zero(), 2.0 * h, pool);
-  std::vector<double> nearest(points.size());
-  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t i = begin; i < end; ++i)
-      nearest[i] = std::sqrt(nearest_squared(index, points.positions, points.positions[i], 2.0 * h,
-                                             static_cast<std::uint32_t>(i))) /
-                   h;
-  });
-  return nearest;
+  return nearest_spacings_of(points, h, points.size(), [](std::size_t k) { return k; }, pool);
 }
 
 template <int D>
@@ -78,23 +100,170 @@ SpacingStats spacing_stats(const PointSet<D>& points, double h) {
   return spacing_stats_of(nearest_neighbour_spacings(points, h));
 }
 
+namespace {
+
+// A large frame's spacing sample is the points of a few blocks of the grid
+// of side kSampleBlock h: about 50 points of a surface sampled at h each, so
+// a sample of 100,000 is spread over a couple of thousand places. A block is
+// sampled when a hash of its coordinates says so, the same for any thread
+// count and point order.
+constexpr double kSampleBlock = 8.0;
+
+std::uint64_t mixed(std::uint64_t x) {  // splitmix64's finaliser
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
 template <int D>
-DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h) {
+void summarise(std::vector<double>& spacings, SpacingSummary& s) {
+  s.measured = spacings.size();
+  if (spacings.empty()) return;
+  // No full sort: the median's place, and one pass for the rest.
+  const auto middle = spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2);
+  std::nth_element(spacings.begin(), middle, spacings.end());
+  s.h.median = *middle;
+  s.h.min = s.h.max = spacings.front();
+  for (const double d : spacings) {
+    s.h.min = std::min(s.h.min, d);
+    s.h.max = std::max(s.h.max, d);
+    s.below += d < kSpacingBandLow ? 1 : 0;
+    s.above += d > kSpacingBandHigh ? 1 : 0;
+  }
+}
+
+// The spacings of the points in sampled blocks (one block in `every`). Only
+// the points within `reach` = 2h of a sampled block (the candidates) are
+// indexed, in one light pass over the set: a sampled point's nearest within
+// reach is then among them, so its spacing is exact. A sampled point with no
+// candidate within reach (a gap wider than 2h) is measured against every
+// point, with an index of them all, as an unsampled frame is.
+template <int D>
+std::vector<double> block_sample_spacings(const PointSet<D>& points, double h, std::uint64_t every, ThreadPool& pool) {
+  const double reach = kSearchRadius * h;
+  const Grid<D> blocks(Vec<D>::Zero(), kSampleBlock * h);
+  auto sampled = [&](const IVec<D>& block) { return mixed(Grid<D>::key(block)) % every == 0; };
+  // Candidates as (id << 1) | (1 if sampled), ids ascending.
+  std::vector<OwnCacheLine<std::vector<std::uint64_t>>> parts(static_cast<std::size_t>(pool.threads()));
+  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int block) {
+    std::vector<std::uint64_t>& out = parts[static_cast<std::size_t>(block)].value;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec<D>& p = points.positions[i];
+      // Points the block grid cannot key go to the index, which names them.
+      if (!p.allFinite() || !blocks.contains_with_margin(p, 2)) {
+        out.push_back(std::uint64_t{i} << 1);
+        continue;
+      }
+      const IVec<D> own = blocks.cell_of(p);
+      const Vec<D> offset = p - blocks.vertex_position(own);
+      // The blocks within reach: own, and across each face that is near.
+      IVec<D> lo = own, hi = own;
+      for (int a = 0; a < D; ++a) {
+        if (offset[a] < reach) lo[a] -= 1;
+        if (offset[a] > blocks.spacing() - reach) hi[a] += 1;
+      }
+      const bool is_sample = sampled(own);
+      bool near = is_sample;
+      if (!near) for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& b) { near = near || sampled(b); });
+      if (near) out.push_back(std::uint64_t{i} << 1 | (is_sample ? 1 : 0));
+    }
+  });
+  std::vector<std::uint64_t> candidates;
+  join_blocks(parts, candidates, pool);
+  std::vector<Vec<D>> positions(candidates.size());
+  pool.parallel_for(candidates.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) positions[k] = points.positions[candidates[k] >> 1];
+  });
+  PointIndex<D> index;
+  index.build(positions, Vec<D>::Zero(), kSearchCell * h, pool);
+  // Per block: the sampled candidates' spacings, and the ids of those without a neighbour within reach.
+  std::vector<OwnCacheLine<std::vector<double>>> found(parts.size());
+  std::vector<OwnCacheLine<std::vector<std::uint64_t>>> far(parts.size());
+  pool.parallel_for(candidates.size(), [&](std::size_t begin, std::size_t end, int block) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if ((candidates[k] & 1) == 0) continue;
+      double best2 = std::numeric_limits<double>::infinity();
+      index.for_each_within(positions[k], reach, [&](std::uint32_t id, const Vec<D>& q) {
+        if (id != k) best2 = std::min(best2, (q - positions[k]).squaredNorm());
+      });
+      if (std::isfinite(best2)) found[static_cast<std::size_t>(block)].value.push_back(std::sqrt(best2) / h);
+      else far[static_cast<std::size_t>(block)].value.push_back(candidates[k] >> 1);
+    }
+  });
+  std::vector<double> spacings;
+  join_blocks(found, spacings, pool);
+  std::vector<std::uint64_t> far_ids;
+  join_blocks(far, far_ids, pool);
+  if (!far_ids.empty()) {
+    const std::vector<double> wide = nearest_spacings_of(
+        points, h, far_ids.size(), [&](std::size_t k) { return static_cast<std::size_t>(far_ids[k]); }, pool);
+    spacings.insert(spacings.end(), wide.begin(), wide.end());
+  }
+  return spacings;
+}
+
+}  // namespace
+
+template <int D>
+SpacingSummary spacing_summary(const PointSet<D>& points, double h, std::size_t max_measured, ThreadPool& pool) {
+  SpacingSummary s;
+  s.of = points.size();
+  if (points.size() < 2) return s;
+  std::vector<double> spacings;
+  if (points.size() > max_measured) {
+    const std::uint64_t every = (points.size() + max_measured - 1) / std::max<std::size_t>(max_measured, 1);
+    spacings = block_sample_spacings(points, h, every, pool);
+  }
+  // A small set, or a sample that fell on no point (a few points far apart): every point.
+  if (spacings.empty())
+    spacings = nearest_spacings_of(points, h, points.size(), [](std::size_t k) { return k; }, pool);
+  summarise<D>(spacings, s);
+  return s;
+}
+
+namespace {
+
+// Nearest distances are summed in chunks of a fixed size and the chunks in
+// order, so that the mean has the same bits for any thread count.
+constexpr std::size_t kDistanceChunk = 4096;
+
+}  // namespace
+
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h,
+                                     ThreadPool& pool) {
   DistanceStats s;
   if (from.empty()) return s;
   if (to.empty()) throw std::invalid_argument("nearest distances: the set to measure against is empty");
   PointIndex<D> index;
-  index.build(to, to.front(), 2.0 * h);
+  index.build(to, to.front(), kSearchCell * h, pool);
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  const std::size_t chunks = (from.size() + kDistanceChunk - 1) / kDistanceChunk;
+  std::vector<double> sums(chunks, 0.0), maxima(chunks, 0.0);
+  pool.parallel_for(chunks, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t c = begin; c < end; ++c)
+      for (std::size_t i = c * kDistanceChunk; i < std::min(from.size(), (c + 1) * kDistanceChunk); ++i) {
+        const double d = std::sqrt(nearest_squared(index, to, from[i], kSearchRadius * h, kNone)) / h;
+        sums[c] += d;
+        maxima[c] = std::max(maxima[c], d);
+      }
+  });
   double sum = 0.0;
-  for (const Vec<D>& p : from) {
-    const double d = std::sqrt(nearest_squared(index, to, p, 2.0 * h, kNone)) / h;
-    sum += d;
-    s.max = std::max(s.max, d);
+  for (std::size_t c = 0; c < chunks; ++c) {
+    sum += sums[c];
+    s.max = std::max(s.max, maxima[c]);
   }
   s.count = from.size();
   s.mean = sum / static_cast<double>(from.size());
   return s;
+}
+
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h) {
+  ThreadPool one(1);
+  return nearest_distance_stats(from, to, h, one);
 }
 
 template SpacingStats spacing_stats<2>(const PointSet<2>&, double);
@@ -107,6 +276,12 @@ template std::vector<double> nearest_neighbour_spacing_per_point<2>(const PointS
 template std::vector<double> nearest_neighbour_spacing_per_point<3>(const PointSet<3>&, double, ThreadPool&);
 template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
 template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
+template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double,
+                                                 ThreadPool&);
+template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double,
+                                                 ThreadPool&);
+template SpacingSummary spacing_summary<2>(const PointSet<2>&, double, std::size_t, ThreadPool&);
+template SpacingSummary spacing_summary<3>(const PointSet<3>&, double, std::size_t, ThreadPool&);
 
 namespace {
 

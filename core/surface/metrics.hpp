@@ -29,6 +29,26 @@ template <int D>
 std::vector<double> nearest_neighbour_spacing_per_point(const PointSet<D>& points, double h, ThreadPool& pool);
 SpacingStats spacing_stats_of(const std::vector<double>& sorted_spacings);
 
+// A frame's spacing as `amls deform` reports it: of every point, or of a
+// sample of a large set (measuring every point, with an index of them all,
+// would cost more than the step that made the frame). The sample is the
+// points of blocks of the grid chosen by a hash of their place, about one
+// point in ceil(size / max_measured); each measured point's distance is to
+// its nearest among all the points, so a sample's figures are those of its
+// points exactly.
+struct SpacingSummary {
+  SpacingStats h;             // min, median, max over the points measured, in units of h
+  std::size_t measured = 0;   // points measured (0 for fewer than 2 points)
+  std::size_t of = 0;         // points in the set
+  std::size_t below = 0;      // measured points nearer than kSpacingBandLow h to their nearest (spacing_band.hpp)
+  std::size_t above = 0;      // ... farther than kSpacingBandHigh h
+  bool sampled() const { return measured < of && measured > 0; }
+};
+// Every point when there are at most max_measured, else a sample of about
+// that many: the same points for any thread count and point order. On the pool.
+template <int D>
+SpacingSummary spacing_summary(const PointSet<D>& points, double h, std::size_t max_measured, ThreadPool& pool);
+
 // Distances from each point of one set to the nearest point of another, in units of h.
 struct DistanceStats {
   double mean = 0.0;
@@ -40,6 +60,10 @@ struct DistanceStats {
 // not be empty unless `from` is).
 template <int D>
 DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h);
+// The same on the pool: the same figures, to the bit, for any thread count.
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h,
+                                     ThreadPool& pool);
 
 // How the zero set of F meets rays cast from a centre. 2D: one closed curve
 // around the centre is crossed exactly once by every ray (the paper's test is

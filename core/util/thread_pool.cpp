@@ -19,6 +19,31 @@ constexpr double kSubrangeSeconds = 1e-3;
 // two edits) goes to sleep at once on a human scale.
 constexpr std::chrono::microseconds kSpin{500};
 
+// The calling thread's time inside parallel loops, in clock ticks, and how
+// many parallel_for calls it is inside (a loop's body may run another pool's).
+thread_local std::chrono::steady_clock::duration parallel_time{0};
+thread_local int parallel_depth = 0;
+
+// Adds the time from construction to destruction to parallel_time, unless an
+// enclosing loop of the same thread already counts it.
+class ParallelTimeScope {
+ public:
+  explicit ParallelTimeScope(bool counted) : counted_(counted && parallel_depth == 0) {
+    ++parallel_depth;
+    if (counted_) start_ = std::chrono::steady_clock::now();
+  }
+  ~ParallelTimeScope() {
+    --parallel_depth;
+    if (counted_) parallel_time += std::chrono::steady_clock::now() - start_;
+  }
+  ParallelTimeScope(const ParallelTimeScope&) = delete;
+  ParallelTimeScope& operator=(const ParallelTimeScope&) = delete;
+
+ private:
+  bool counted_;
+  std::chrono::steady_clock::time_point start_;
+};
+
 ThreadPool::CancelCheck& default_cancel_check() {
   static ThreadPool::CancelCheck check;
   return check;
@@ -27,6 +52,10 @@ ThreadPool::CancelCheck& default_cancel_check() {
 }  // namespace
 
 void ThreadPool::set_default_cancel_check(CancelCheck check) { default_cancel_check() = std::move(check); }
+
+double ThreadPool::parallel_seconds_of_this_thread() {
+  return std::chrono::duration<double>(parallel_time).count();
+}
 
 ThreadPool::ThreadPool(int threads) : check_(default_cancel_check()) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -106,6 +135,8 @@ void ThreadPool::run_block(int block) {
 }
 
 void ThreadPool::parallel_for(std::size_t n, Body body) {
+  // A loop of one item is serial work, whatever the pool.
+  const ParallelTimeScope timed(n >= 2);
   cancelled_.store(false, std::memory_order_relaxed);
   if (workers_.empty() || n < 2) {
     run_range(body, 0, n, 0);

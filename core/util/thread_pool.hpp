@@ -14,6 +14,10 @@
 // Blocks are claimed, not assigned: a thread that is late (asleep, or off its
 // core on a busy machine) finds its block done by the others rather than
 // holding up the loop. Which thread runs a block changes nothing in it.
+//
+// Every pool counts, per calling thread, the wall time spent inside its
+// parallel loops (two clock reads per parallel_for call), so that a run can
+// tell how much of its time is serial (core/util/parallel_stopwatch.hpp).
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -73,6 +77,8 @@ class ThreadPool {
 
   // Calls body for `threads()` contiguous blocks covering [0, n), each run
   // by one thread (the calling thread too), and returns when all are done.
+  // Block k covers the same range in every call with the same n, so that two
+  // loops over the same items can share per-block state (a sort's counts).
   // The first exception thrown by a block is rethrown here.
   //
   // Without a cancellation check, body(begin, end, block) runs once per
@@ -99,6 +105,13 @@ class ThreadPool {
   // a program whose work all stops on one flag, as the command line's on
   // Ctrl+C (core/util/interrupt.hpp). Call it before any pool exists.
   static void set_default_cancel_check(CancelCheck check);
+
+  // Seconds the calling thread has spent inside parallel loops since it
+  // started: parallel_for calls over at least two items, of any pool, the
+  // outermost only when a loop's body runs another. A loop counts whatever
+  // its thread count (with one thread it is the work that more threads would
+  // share), so on one thread the rest of a run's time is its serial part.
+  static double parallel_seconds_of_this_thread();
 
  private:
   // One direction of hand-off: a thread waits until `ready` holds.
