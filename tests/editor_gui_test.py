@@ -13,7 +13,10 @@ the scene's first stage, Shift+click on the curve adds another,
 a drag deforms the surface the way it says (Ctrl+S exports the result), the
 interpolated variant (key I) changes the next export, F12 writes a screenshot
 whose pixels show the surface and the handles; Esc and undo restore the
-point set; on a heavy 3D scene, frames keep coming while the worker resamples.
+point set; on a 3D sphere, an Alt+drag lasso makes a region, a second one
+pinned (key P) stays put while the first is dragged by its marker (the export
+shows the first moved rigidly and the second where it was); on a heavy 3D
+scene, frames keep coming while the worker resamples.
 The editor's debug log (--debug-log) says when it is ready and where the view
 is. Exits 77 (skipped) without a display or xdotool.
 """
@@ -140,8 +143,9 @@ class Editor:
         check(True, "the editor quits cleanly on Ctrl+Q")
 
 
-def read_ply(path):
-    """(x, y) of every point of a binary little-endian PLY with double properties, as the editor writes."""
+def read_ply(path, coordinates=2):
+    """(x, y), or (x, y, z), of every point of a binary little-endian PLY with double properties, as the editor
+    writes."""
     with open(path, "rb") as f:
         data = f.read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
@@ -151,7 +155,7 @@ def read_ply(path):
     check("binary_little_endian" in header[1], "the export is binary PLY")
     check(properties[:6] == ["x", "y", "z", "nx", "ny", "nz"], "the export has positions and normals")
     stride = 8 * len(properties)
-    return [struct.unpack_from("<2d", data, end + i * stride) for i in range(count)]
+    return [struct.unpack_from("<%dd" % coordinates, data, end + i * stride) for i in range(count)]
 
 
 def read_png(path):
@@ -215,20 +219,26 @@ def shift_click(editor, at):
     xdotool("keyup", "shift")
 
 
-def export(editor, path, nth):
+def export(editor, path, nth, coordinates=2):
     editor.wait_idle()
     editor.key("ctrl+s")
     editor.wait_line("message level=info Exported", after=nth, what="export number %d" % (nth + 1))
-    return read_ply(path)
+    return read_ply(path, coordinates)
+
+
+def write_scene(folder, name, text):
+    path = os.path.join(folder, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
 
 
 def test_2d(binary, folder):
-    scene = os.path.join(folder, "circle.json")
-    with open(scene, "w") as f:
-        # The scene's first stage puts a handle at the bottom: the editor starts with it.
-        f.write('{"dimension": 2, "name": "circle", "shape": {"type": "circle", "radius": 1, "points": 250},'
-                ' "grid": {"spacing": 0.024}, "stages": [{"handles": [[0, -1]],'
-                ' "targets": [{"steps": 1, "handles": [[0, -1.2]]}]}]}')
+    # The scene's first stage puts a handle at the bottom: the editor starts with it.
+    scene = write_scene(folder, "circle.json",
+                        '{"dimension": 2, "name": "circle", "shape": {"type": "circle", "radius": 1, "points": 250},'
+                        ' "grid": {"spacing": 0.024}, "stages": [{"handles": [[0, -1]],'
+                        ' "targets": [{"steps": 1, "handles": [[0, -1.2]]}]}]}')
     out, shot = os.path.join(folder, "out.ply"), os.path.join(folder, "shot.png")
     editor = Editor(binary, folder, "editor2d", [scene, "--export", out, "--screenshot", shot])
     editor.wait_line(r"snapshot .* load=1 dimension=2 points=250", what="the 2D scene to load")
@@ -292,6 +302,100 @@ def test_2d(binary, folder):
     editor.key("ctrl+z")
     editor.wait_line(r"snapshot .* steps=", after=0)
     check(export(editor, out, 5) == before, "Ctrl+Z restores the point set as it was at mouse-down")
+    editor.quit()
+
+
+def orbit_to_window(editor, p):
+    """Window coordinates of a world point in the default orbit view (azimuth and elevation 0, 40 degree fov)."""
+    line = [l for l in editor.lines() if " view mode=orbit" in l][-1]
+    fields = dict(re.findall(r"(\w+)=(\S+)", line))
+    if float(fields["azimuth"]) != 0 or float(fields["elevation"]) != 0:
+        fail("the 3D view is not the default one: " + line)
+    target = [float(v) for v in fields["target"].split(",")]
+    distance, ppu = float(fields["distance"]), float(fields["pixels_per_unit"])
+    width, height = (int(v) for v in fields["viewport"].split("x"))
+    depth = target[2] + distance - p[2]
+    tangent = 0.36397023426620234  # tan(20 degrees)
+    nx = (p[0] - target[0]) / (depth * tangent * width / height)
+    ny = (p[1] - target[1]) / (depth * tangent)
+    return round((nx * 0.5 + 0.5) * width / ppu), round((0.5 - ny * 0.5) * height / ppu)
+
+
+def lasso(editor, corners):
+    """An Alt+drag along the corners and back to the first."""
+    editor.move(*corners[0])
+    time.sleep(0.2)
+    xdotool("keydown", "alt")
+    time.sleep(0.1)
+    xdotool("mousedown", 1)
+    for corner in corners[1:] + corners[:1]:
+        time.sleep(0.04)
+        editor.move(*corner)
+    time.sleep(0.2)
+    xdotool("mouseup", 1)
+    time.sleep(0.1)
+    xdotool("keyup", "alt")
+
+
+def circle_on_sphere(editor, x, y, radius, corners=12):
+    """The lasso corners of a circle of `radius` about (x, y) on the front of the unit sphere, on screen, from
+    its left (the side panel's edge is further left; Table 1's window may reach over its right)."""
+    out = []
+    for k in range(corners):
+        a = math.pi * (1 + 2 * k / corners)
+        px, py = x + radius * math.cos(a), y + radius * math.sin(a)
+        out.append(orbit_to_window(editor, (px, py, math.sqrt(max(0.0, 1 - px * px - py * py)))))
+    return out
+
+
+def regions_line(editor, pattern):
+    return editor.wait_line(r"regions " + pattern, what="regions " + pattern)
+
+
+def test_regions(binary, folder):
+    # A handle at the back pole, which the drags leave in place.
+    scene = write_scene(folder, "sphere_regions.json",
+                        '{"dimension": 3, "name": "sphere", "shape": {"type": "sphere", "radius": 1, "points": 3000},'
+                        ' "grid": {"spacing": 0.08}, "stages": [{"handles": [[0, 0, -1]],'
+                        ' "targets": [{"steps": 1, "handles": [[0, 0, -1]]}]}]}')
+    out = os.path.join(folder, "regions.ply")
+    editor = Editor(binary, folder, "regions", [scene, "--export", out])
+    editor.wait_line(r"snapshot .* load=1 dimension=3", what="the sphere to load")
+    editor.wait_idle()
+    h = 0.08
+
+    # A lasso about the front pole: a moving region; one below it, pinned with P.
+    lasso(editor, circle_on_sphere(editor, 0.0, 0.0, 0.45))
+    regions_line(editor, r"count=1 active=0 \| members=\d+ pinned=0")
+    lasso(editor, circle_on_sphere(editor, 0.0, -0.75, 0.18))
+    regions_line(editor, r"count=2 active=1 .*\| members=\d+ pinned=0 ")
+    editor.wait_idle()
+    editor.key("p")
+    line = regions_line(editor, r"count=2 active=1 .*\| members=\d+ pinned=1 ")
+    members = [int(m) for m in re.findall(r"members=(\d+)", line)]
+    check(members[0] > 50 and members[1] > 10, "two lassos made two regions (%s members)" % members)
+
+    # Drag the first region's marker to the right.
+    marker = [float(v) for v in re.findall(r"marker=(\S+),(\S+) ", line)[0]]
+    start = (round(marker[0]), round(marker[1]))
+    drag(editor, start, (start[0] + 80, start[1]))
+    editor.wait_idle()
+    line = [l for l in editor.lines() if "regions count=2" in l][-1]
+    translation = [float(v) for v in re.findall(r"translation=(\S+),(\S+),(\S+)", line)[0]]
+    check(translation[0] > 0.1 and abs(translation[1]) < 0.02, "the marker's drag moved the region (%s)" % translation)
+    points = export(editor, out, 0, 3)
+
+    # The moved cap lies on the sphere moved with it, the pinned one on the sphere itself: within 0.05 h
+    # where the points' fits (3 h around them) do not reach past the lasso's rim.
+    t = translation
+    moved = [p for p in points if math.hypot(p[0] - t[0], p[1] - t[1]) < 0.2 and p[2] > 0.5]
+    pinned = [p for p in points if math.hypot(p[0], p[1] + 0.75) < 0.08 and p[2] > 0.0]
+    off_moved = max(abs(math.dist(p[:3], t) - 1.0) for p in moved)
+    off_pinned = max(abs(math.hypot(*p[:3]) - 1.0) for p in pinned)
+    check(len(moved) > 10 and off_moved < 0.05 * h,
+          "the points inside the dragged region moved with it (%d, %.5f h off)" % (len(moved), off_moved / h))
+    check(len(pinned) > 3 and off_pinned < 0.05 * h,
+          "the points of the pinned region stayed (%d, %.5f h off)" % (len(pinned), off_pinned / h))
     editor.quit()
 
 
@@ -412,6 +516,7 @@ def main():
         begin = time.monotonic()
         test_2d(binary, folder)
         test_open_without_normals(binary, folder)
+        test_regions(binary, folder)
         test_frames_during_heavy_step(binary, folder)
         print("all GUI checks passed in %.1f s" % (time.monotonic() - begin))
     finally:

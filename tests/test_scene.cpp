@@ -7,6 +7,7 @@
 
 #include "core/run/scene.hpp"
 #include "core/run/scene_run.hpp"
+#include "tests/scene_errors.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;
@@ -28,23 +29,11 @@ const char* kGood2d = R"({
 })";
 
 // The message a scene (JSON text, or a file named in it) is rejected with.
-std::string error_of(const std::string& text, const TempDir& dir) {
-  const std::string path = dir.file("scene.json");
-  write_text(path, text);
-  try {
-    read_scene(path);
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
+std::string error_of(const std::string& text, const TempDir& dir) { return amls::test::scene_error_of(text, dir); }
 
 // kGood2d with one edit: `from` replaced by `to`.
 std::string edited(const std::string& from, const std::string& to) {
-  std::string text = kGood2d;
-  const std::size_t at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
+  return amls::test::edited_text(kGood2d, from, to);
 }
 
 }  // namespace

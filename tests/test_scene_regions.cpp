@@ -1,11 +1,11 @@
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 
 #include "core/run/scene.hpp"
 #include "region_fixtures.hpp"
+#include "tests/scene_errors.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;
@@ -35,22 +35,8 @@ const char* kRegions2d = R"({
   ]
 })";
 
-std::string error_of(const std::string& text, const TempDir& dir) {
-  const std::string path = dir.file("scene.json");
-  write_text(path, text);
-  try {
-    read_scene(path);
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
-
 std::string edited(const std::string& from, const std::string& to) {
-  std::string text = kRegions2d;
-  const std::size_t at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
+  return amls::test::edited_text(kRegions2d, from, to);
 }
 
 bool mentions(const std::string& message, const std::string& part) {
@@ -105,34 +91,42 @@ TEST_CASE("scene regions: the 3D fixture survives the round trip bit for bit") {
 
 TEST_CASE("scene regions: bad keys and values are refused with their place") {
   TempDir dir;
-  CHECK(mentions(error_of(edited("{\"region\": 1}", "{\"region\": 2}"), dir),
-                 "stages[0].regions[1].region: must be within [0, 1] (a region's index), got 2"));
-  CHECK(mentions(error_of(edited("{\"region\": 1}", "{\"region\": 0}"), dir),
-                 "stages[0].regions[1].region: region 0 is in this stage twice"));
-  CHECK(mentions(error_of(edited("\"regions\": [{}, {\"translation\"", "\"regions\": [{\"scale\": 2}, {\"translation\""), dir),
-                 "stages[0].targets[0].regions[0]: the region is pinned in this stage, but the target moves it"));
-  CHECK(mentions(error_of(edited("\"regions\": [{}, {\"translation\"", "\"regions\": [{\"translation\""), dir),
-                 "stages[0].targets[0].regions: 1 motions, but the stage has 2 regions"));
-  CHECK(mentions(error_of(edited("\"scale\": 1.1", "\"scale\": 0"), dir),
-                 "stages[0].targets[0].regions[1].scale: must be within [0.001, 1000]"));
-  CHECK(mentions(error_of(edited("\"rotation\": 0.5", "\"rotation\": [0.5]"), dir),
-                 "stages[0].targets[0].regions[1].rotation: expected a number, got an array"));
-  CHECK(mentions(error_of(edited("\"reach\": 0.05", "\"reach\": -1"), dir), "regions[1].reach: must be within"));
-  CHECK(mentions(error_of(edited("\"reach\": 0.05", "\"radius\": 1"), dir), "regions[1].radius: unknown key"));
-  CHECK(mentions(error_of(edited("{\"points\": [[-1, 0], [-0.99, 0.14]], \"reach\": 0.05}", "{\"points\": []}"), dir),
-                 "regions[1].points: must be within [1, 2e+07]"));
-  CHECK(mentions(error_of(edited("{\"translation\": [0.01, 0]}", "{\"translation\": [0.01, 0, 0]}"), dir),
-                 "stages[1].regions[0].motion.translation: expected an array of 2 numbers"));
-  CHECK(mentions(error_of(edited("{\"translation\": [0.01, 0]}", "{\"shift\": [0.01, 0]}"), dir),
-                 "stages[1].regions[0].motion.shift: unknown key"));
-  // A stage of regions alone may have no point handle; a stage with neither is refused.
-  CHECK(mentions(error_of(edited("\"regions\": [{\"region\": 0, \"motion\"", "\"pins\": [{\"region\": 0, \"motion\""), dir),
-                 "stages[1].handles: must be within [1, 1024] (handles in a stage), got 0"));
+  struct Case {
+    const char* from;
+    const char* to;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"{\"region\": 1}", "{\"region\": 2}", "stages[0].regions[1].region: must be within [0, 1] (a region's index), got 2"},
+      {"{\"region\": 1}", "{\"region\": 0}", "stages[0].regions[1].region: region 0 is in this stage twice"},
+      {"\"regions\": [{}, {\"translation\"", "\"regions\": [{\"scale\": 2}, {\"translation\"",
+       "stages[0].targets[0].regions[0]: the region is pinned in this stage, but the target moves it"},
+      {"\"regions\": [{}, {\"translation\"", "\"regions\": [{\"translation\"",
+       "stages[0].targets[0].regions: 1 motions, but the stage has 2 regions"},
+      {"\"scale\": 1.1", "\"scale\": 0", "stages[0].targets[0].regions[1].scale: must be within [0.001, 1000]"},
+      {"\"rotation\": 0.5", "\"rotation\": [0.5]",
+       "stages[0].targets[0].regions[1].rotation: expected a number, got an array"},
+      {"\"reach\": 0.05", "\"reach\": -1", "regions[1].reach: must be within"},
+      {"\"reach\": 0.05", "\"radius\": 1", "regions[1].radius: unknown key"},
+      {"{\"points\": [[-1, 0], [-0.99, 0.14]], \"reach\": 0.05}", "{\"points\": []}",
+       "regions[1].points: must be within [1, 2e+07]"},
+      {"{\"translation\": [0.01, 0]}", "{\"translation\": [0.01, 0, 0]}",
+       "stages[1].regions[0].motion.translation: expected an array of 2 numbers"},
+      {"{\"translation\": [0.01, 0]}", "{\"shift\": [0.01, 0]}", "stages[1].regions[0].motion.shift: unknown key"},
+      // A stage of regions alone may have no point handle; a stage with neither is refused.
+      {"\"regions\": [{\"region\": 0, \"motion\"", "\"pins\": [{\"region\": 0, \"motion\"",
+       "stages[1].handles: must be within [1, 1024] (handles in a stage), got 0"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.to);
+    CHECK(mentions(amls::test::scene_error_of(edited(c.from, c.to), dir), c.message));
+  }
   std::string no_regions = kRegions2d;
   const std::string cut = R"("regions": [
     {"points": [[1, 0], [0.99, 0.14], [0.99, -0.14]]},
     {"points": [[-1, 0], [-0.99, 0.14]], "reach": 0.05}
   ],)";
   no_regions.replace(no_regions.find(cut), cut.size(), "");
-  CHECK(mentions(error_of(no_regions, dir), "stages[0].regions[0]: the scene defines no 'regions' to refer to"));
+  CHECK(mentions(amls::test::scene_error_of(no_regions, dir),
+                 "stages[0].regions[0]: the scene defines no 'regions' to refer to"));
 }

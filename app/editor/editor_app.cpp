@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "core/io/point_set_io.hpp"
+#include "app/editor/region_panel.hpp"
 #include "render/image.hpp"
 
 namespace amls::editor {
@@ -46,6 +47,7 @@ EditorApp::EditorApp(const EditorOptions& options)
       log_(options.debug_log),
       window_(options.width, options.height, "amls-editor", options.ui_scale),
       view_([this](Command c) { post(std::move(c)); }),
+      regions_([this](Command c) { post(std::move(c)); }),
       browser_(std::filesystem::current_path()) {
   renderer_ = std::make_unique<SplatRenderer>();
   ui_.export_path = options.export_path;
@@ -57,6 +59,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   ui_.render.line_width_px = std::max(1.0f, std::round(window_.ui_scale()));
   ui_.render.scalar_range = glm::vec2(0.0f, 2.0f);
   view_.set_pick_radius(8.0f * window_.ui_scale() * window_.pixels_per_unit().x);
+  regions_.set_pick_radius(12.0f * window_.ui_scale() * window_.pixels_per_unit().x);
   WorkerOptions worker;
   worker.threads = options.threads > 0 ? options.threads : default_threads();
   worker.on_publish = [] { EditorWindow::wake(); };
@@ -93,7 +96,8 @@ int EditorApp::run() {
 
 double EditorApp::wait_timeout() const {
   // Busy or interacting: about 60 frames a second to show progress; idle: wake on events (and now and then).
-  if (worker_->status().busy || view_.dragging() || screenshot_requested_ || !background_.empty()) return 1.0 / 60.0;
+  if (worker_->status().busy || view_.dragging() || regions_.busy() || screenshot_requested_ || !background_.empty())
+    return 1.0 / 60.0;
   return 0.25;
 }
 
@@ -113,6 +117,10 @@ void EditorApp::frame() {
   draw_table1(snapshot);
   draw_status_bar(ui_, snapshot, status, view_);
   draw_help(ui_);
+  if (snapshot.dimension > 0) {
+    draw_region_window(regions_, snapshot.settings.spacing);
+    draw_region_overlay(regions_, view_.camera(), window_.viewport(), window_.pixels_per_unit());
+  }
   if (std::optional<std::string> chosen = browser_.draw(ui_.show_browser)) post(command::LoadFile{*chosen});
 
   const Viewport viewport = window_.viewport();
@@ -136,6 +144,7 @@ void EditorApp::frame() {
            " dragging=" + (view_.dragging() ? "1" : "0");
   });
   log_view();
+  log_regions();
   for (auto it = background_.begin(); it != background_.end();) {
     if (it->wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
       ++it;
@@ -168,6 +177,7 @@ void EditorApp::take_snapshot() {
         ui_.tell({Message::Level::error, std::string("Cannot show the points: ") + e.what()});
       }
       // In 3D a click anywhere on a splat picks its point (splats are RenderOptions::splat_scale h wide).
+      regions_.set_points(next->points);
       view_.set_points(next->points, next->dimension == 3
                                          ? ui_.render.splat_scale * static_cast<float>(next->settings.spacing)
                                          : 0.0f);
@@ -191,8 +201,12 @@ void EditorApp::take_snapshot() {
     }
   }
   // The worker's handles, once it has applied everything the UI sent.
-  if (next->processed >= last_posted_) view_.sync_handles(next->handles);
+  if (next->processed >= last_posted_) {
+    view_.sync_handles(next->handles);
+    regions_.sync(next->regions);
+  }
   if (new_load && next->dimension > 0) {
+    regions_.start();
     renderer_->set_handles({});
     view_.start(next->dimension, renderer_->bounds(), window_.viewport());
     window_.set_title("amls-editor - " + next->name);
@@ -229,6 +243,9 @@ void EditorApp::process_input() {
     const bool starts = (event.type == InputEvent::Type::button && event.action == GLFW_PRESS) ||
                         event.type == InputEvent::Type::scroll;
     if (starts && io.WantCaptureMouse) continue;
+    if (!view_.dragging() &&
+        regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
+      continue;
     if (event.type == InputEvent::Type::button)
       log_.line([&] {
         return "button " + std::to_string(event.code) + " action=" + std::to_string(event.action) +
@@ -238,6 +255,7 @@ void EditorApp::process_input() {
     view_.on_event(event, viewport, scale);
   }
   view_.update(viewport, io.KeyShift, io.WantCaptureMouse);
+  regions_.update();
 }
 
 void EditorApp::on_key(const InputEvent& event) {
@@ -303,8 +321,12 @@ void EditorApp::on_key(const InputEvent& event) {
         ui_.show_browser = false;
       else if (ui_.show_help)
         ui_.show_help = false;
-      else
+      else if (!regions_.cancel())
         view_.cancel();
+      break;
+    case GLFW_KEY_P:
+      if (!ctrl && regions_.active() && *regions_.active() < regions_.regions().size())
+        regions_.set_pinned(!regions_.regions()[*regions_.active()].pinned);
       break;
     case GLFW_KEY_DELETE:
     case GLFW_KEY_BACKSPACE:
@@ -368,6 +390,26 @@ void EditorApp::save_scene() {
 void EditorApp::fit_view() {
   const BoundingSphere bounds = renderer_->bounds();
   if (!bounds.empty()) view_.fit(bounds, window_.viewport());
+}
+
+void EditorApp::log_regions() {
+  if (!log_.enabled()) return;
+  std::ostringstream line;
+  line.precision(9);
+  const glm::vec2 ppu = window_.pixels_per_unit();
+  line << "regions count=" << regions_.regions().size() << " active="
+       << (regions_.active() ? static_cast<long long>(*regions_.active()) : -1LL);
+  for (const RegionView& r : regions_.regions()) {
+    const glm::vec3 w = view_.camera().to_window(
+        glm::vec3(static_cast<float>(r.centre.x()), static_cast<float>(r.centre.y()), static_cast<float>(r.centre.z())),
+        window_.viewport());
+    line << " | members=" << r.members.size() << " pinned=" << r.pinned << " marker=" << w.x / ppu.x << ","
+         << w.y / ppu.y << " translation=" << r.motion.translation.x() << "," << r.motion.translation.y() << ","
+         << r.motion.translation.z();
+  }
+  if (line.str() == last_regions_) return;
+  last_regions_ = line.str();
+  log_.line(last_regions_);
 }
 
 void EditorApp::log_view() {

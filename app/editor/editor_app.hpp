@@ -16,6 +16,7 @@
 #include "app/editor/editor_worker.hpp"
 #include "app/editor/file_browser.hpp"
 #include "app/editor/panels.hpp"
+#include "app/editor/region_tool.hpp"
 #include "app/editor/ui_state.hpp"
 #include "app/editor/view_controller.hpp"
 #include "render/splat_renderer.hpp"
@@ -43,6 +44,7 @@ class EditorApp {
   void save_scene();
   void fit_view();
   void log_view();
+  void log_regions();
   double wait_timeout() const;
 
   EditorOptions options_;
@@ -51,6 +53,8 @@ class EditorApp {
   std::unique_ptr<SplatRenderer> renderer_;
   UiState ui_;
   ViewController view_;
+  RegionTool regions_;
+  std::string last_regions_;
   FileBrowser browser_;
   std::shared_ptr<const Snapshot> shown_;
   std::uint64_t last_posted_ = 0;

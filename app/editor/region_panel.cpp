@@ -1,0 +1,99 @@
+#include "app/editor/region_panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace amls::editor {
+
+namespace {
+
+// Drawing more members than this per region only costs: every k-th is drawn.
+constexpr std::size_t kMostDotsDrawn = 20000;
+
+ImU32 region_colour(std::size_t index, bool pinned, float alpha) {
+  // Pinned regions blue, moving ones in warm colours that differ from region to region.
+  static const ImVec4 kMoving[] = {{1.0f, 0.45f, 0.1f, 1}, {0.95f, 0.2f, 0.6f, 1}, {0.9f, 0.8f, 0.1f, 1}};
+  const ImVec4 c = pinned ? ImVec4(0.3f, 0.6f, 1.0f, 1) : kMoving[index % 3];
+  return ImGui::GetColorU32(ImVec4(c.x, c.y, c.z, alpha));
+}
+
+}  // namespace
+
+void draw_region_overlay(const RegionTool& tool, const Camera& camera, const Viewport& viewport,
+                         glm::vec2 pixels_per_unit) {
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const auto to_screen = [&](const Vec<3>& x, bool& visible) {
+    const glm::vec3 w =
+        camera.to_window(glm::vec3(static_cast<float>(x.x()), static_cast<float>(x.y()), static_cast<float>(x.z())),
+                         viewport);
+    visible = w.z >= 0.0f && w.z <= 1.0f;
+    return ImVec2(w.x / pixels_per_unit.x, w.y / pixels_per_unit.y);
+  };
+  const float dot = 1.5f;
+  for (std::size_t r = 0; r < tool.regions().size(); ++r) {
+    const RegionView& region = tool.regions()[r];
+    const bool active = tool.active() == r;
+    const ImU32 colour = region_colour(r, region.pinned, active ? 0.8f : 0.55f);
+    const std::size_t stride = std::max<std::size_t>(1, region.members.size() / kMostDotsDrawn);
+    for (std::size_t i = 0; i < region.members.size(); i += stride) {
+      bool visible = false;
+      const ImVec2 p = to_screen(region.members[i], visible);
+      if (visible) draw->AddRectFilled(ImVec2(p.x - dot, p.y - dot), ImVec2(p.x + dot, p.y + dot), colour);
+    }
+    bool visible = false;
+    const ImVec2 c = to_screen(region.centre, visible);
+    if (!visible) continue;
+    const float ring = 9.0f;
+    const ImU32 marker = region_colour(r, region.pinned, 1.0f);
+    draw->AddCircle(c, ring, marker, 24, active ? 3.0f : 1.5f);
+    if (region.pinned) {
+      draw->AddLine(ImVec2(c.x - ring, c.y - ring), ImVec2(c.x + ring, c.y + ring), marker, 1.5f);
+      draw->AddLine(ImVec2(c.x - ring, c.y + ring), ImVec2(c.x + ring, c.y - ring), marker, 1.5f);
+    } else {
+      draw->AddCircleFilled(c, 3.0f, marker);
+    }
+  }
+  const std::span<const glm::vec2> lasso = tool.lasso();
+  if (lasso.size() >= 2) {
+    std::vector<ImVec2> corners;
+    for (const glm::vec2& p : lasso) corners.emplace_back(p.x / pixels_per_unit.x, p.y / pixels_per_unit.y);
+    draw->AddPolyline(corners.data(), static_cast<int>(corners.size()), IM_COL32(255, 255, 255, 220),
+                      ImDrawFlags_Closed, 1.5f);
+  }
+}
+
+void draw_region_window(RegionTool& tool, double reach) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float margin = ImGui::GetStyle().WindowPadding.x;
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - margin, io.DisplaySize.y - 3.0f * ImGui::GetFontSize()),
+                          ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("Regions", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::Checkbox("Lasso (or Alt+drag)", &tool.lasso_mode);
+  int edit = static_cast<int>(tool.edit);
+  ImGui::RadioButton("new", &edit, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("add", &edit, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("subtract", &edit, 2);
+  tool.edit = static_cast<RegionTool::Edit>(edit);
+  const std::size_t count = tool.regions().size();
+  ImGui::Text("%zu region%s%s", count, count == 1 ? "" : "s",
+              count > 0 ? ": drag a marker (Ctrl: turn, Ctrl+Shift: scale)" : "");
+  if (const std::optional<std::size_t> active = tool.active(); active && *active < count) {
+    const RegionView& region = tool.regions()[*active];
+    ImGui::Text("region %zu: %zu points", *active + 1, region.members.size());
+    bool pinned = region.pinned;
+    if (ImGui::Checkbox("pinned (P)", &pinned)) tool.set_pinned(pinned);
+    ImGui::SameLine();
+    if (ImGui::Button("invert")) tool.invert_active(reach);
+    ImGui::SameLine();
+    if (ImGui::Button("remove")) tool.remove_active();
+  }
+  ImGui::End();
+}
+
+}  // namespace amls::editor

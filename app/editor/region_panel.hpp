@@ -1,0 +1,16 @@
+#pragma once
+// The editor's region handles on screen (Dear ImGui): each region's members
+// as dots in its own colour over the view, its centre marker as a ring (the
+// active one brighter, a pinned one with a cross), the lasso being drawn; and
+// a small window to choose the lasso's mode, pin, invert or remove the active region.
+#include "app/editor/region_tool.hpp"
+
+namespace amls::editor {
+
+// `pixels_per_unit` converts ImGui's window units to framebuffer pixels.
+void draw_region_overlay(const RegionTool& tool, const Camera& camera, const Viewport& viewport,
+                         glm::vec2 pixels_per_unit);
+// `reach`: the distance within which a point belongs to a region (h), for Invert.
+void draw_region_window(RegionTool& tool, double reach);
+
+}  // namespace amls::editor

@@ -1,0 +1,97 @@
+#pragma once
+// Region handles in the editor's view (core/deform/region_handle.hpp):
+// selecting a part of the surface and moving it as one piece.
+//
+// - Alt+drag (or any left drag while the lasso mode is on) draws a lasso; on
+//   release the points inside it that face the viewer become a new region,
+//   or are added to or taken from the active one (the edit mode).
+// - A drag of a region's centre marker moves the region: plain, it
+//   translates in the plane parallel to the screen; with Ctrl it turns about
+//   the view axis by the angle swept around the marker; with Ctrl+Shift it
+//   scales by the ratio of the distances from the marker. A pinned region
+//   does not move.
+// Region edits become worker commands; while a drag runs the regions shown
+// are the tool's own, so that they follow the cursor at once. No GL.
+#include <functional>
+#include <glm/glm.hpp>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "app/editor/command.hpp"
+#include "app/editor/editor_window.hpp"
+#include "app/editor/region_moves.hpp"
+#include "render/camera.hpp"
+#include "render/point_data.hpp"
+
+namespace amls::editor {
+
+class RegionTool {
+ public:
+  enum class Edit { new_region, add, subtract };
+
+  explicit RegionTool(std::function<void(Command)> post);
+
+  void set_points(std::shared_ptr<const PreparedPoints> points) { points_ = std::move(points); }
+  // The worker's regions; taken unless a drag runs.
+  void sync(const std::vector<RegionView>& regions);
+  // A new shape: no lasso, no drag, no active region.
+  void start();
+
+  // One event the UI did not take; true if the tool used it. `handles` are
+  // the point handles as the view has them (a region move sends them along).
+  bool on_event(const InputEvent& event, const Viewport& viewport, glm::vec2 pixels_per_unit, const Camera& camera,
+                const std::vector<Vec<3>>& handles);
+  // Once per frame: the newest drag position to the worker.
+  void update();
+  // Esc: a region drag goes back to mouse-down, a lasso is dropped. False if there was neither.
+  bool cancel();
+
+  // The active region: pinned or let go, removed, inverted (the points of
+  // `points` farther than `reach` from it become its members).
+  void set_pinned(bool pinned);
+  void remove_active();
+  void invert_active(double reach);
+
+  bool lasso_mode = false;  // a plain left drag draws a lasso
+  Edit edit = Edit::new_region;
+
+  std::optional<std::size_t> active() const { return active_; }
+  void set_active(std::optional<std::size_t> index) { active_ = index; }
+  bool busy() const { return drag_.has_value() || !lasso_.empty(); }
+  const std::vector<RegionView>& regions() const { return regions_; }
+  std::span<const glm::vec2> lasso() const { return lasso_; }
+  // How near (framebuffer pixels) the cursor must come to a marker to grab it.
+  void set_pick_radius(float pixels) { pick_radius_px_ = pixels; }
+
+ private:
+  enum class Gesture { translate, rotate, scale };
+  struct Drag {
+    std::size_t index = 0;
+    Gesture gesture = Gesture::translate;
+    RegionView start;         // the region at mouse-down
+    glm::vec3 grab{0.0f};     // the plane point under the cursor at mouse-down
+    glm::vec3 axis{0.0f};     // the view axis (rotate)
+    std::vector<Vec<3>> handles;
+    bool moved = false;       // the worker has a BeginDrag
+  };
+
+  void finish_lasso(const Camera& camera, const Viewport& viewport);
+  void drag_to(glm::vec2 pixel, const Camera& camera, const Viewport& viewport);
+  std::vector<Vec<3>> selected_positions(std::span<const std::size_t> ids) const;
+
+  std::function<void(Command)> post_;
+  std::shared_ptr<const PreparedPoints> points_;
+  std::vector<RegionView> regions_;
+  std::optional<std::size_t> active_;
+  std::vector<glm::vec2> lasso_;
+  std::optional<Drag> drag_;
+  bool move_pending_ = false;
+  float pick_radius_px_ = 12.0f;
+};
+
+// The region moved by `motion` from where `view` shows it.
+RegionView moved_region(const RegionView& view, const command::RegionMove& motion);
+
+}  // namespace amls::editor
