@@ -216,8 +216,7 @@ void Resampler<D>::drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid
       const Crossing& x = crossings_[c];
       Vec<D> q = grid.vertex_position(field_.vertex_of(x.from));
       q[x.axis] += x.t * h;
-      inside[c] = !rim.rim.near(q) ||
-                  inside_rim(rim, h, q, Vec<D>(values_[x.from].gradient + values_[x.to].gradient));
+      inside[c] = inside_rim(rim, h, q, Vec<D>(values_[x.from].gradient + values_[x.to].gradient));
     }
   });
   std::size_t kept = 0;

@@ -111,9 +111,6 @@ class SurfaceRim {
   // G(x) for a position x whose surface normal is about `normal`; nullopt
   // where no rim sample reaches (inside).
   std::optional<double> side(const Vec<D>& x, const Vec<D>& normal) const;
-  // Whether some rim sample may reach x: a single lookup, for callers that
-  // test many positions of which few lie near a rim.
-  bool near(const Vec<D>& x) const;
   // Calls fn(k, position) for every rim sample k within `radius` of x.
   template <typename Fn>
   void for_each_within(const Vec<D>& x, double radius, Fn&& fn) const {
@@ -121,6 +118,10 @@ class SurfaceRim {
   }
 
  private:
+  // Whether some rim sample may reach x: a single lookup, so that side()
+  // costs little at the many positions that lie far from any rim.
+  bool near(const Vec<D>& x) const;
+
   Samples samples_;
   PointIndex<D> index_;
   // The index's cells that hold a sample or touch one that does.
