@@ -73,7 +73,7 @@ int main(int argc, char** argv) try {
   double first_ms = 0.0;
   for (std::size_t k = 1; k <= moves; ++k) {
     const Clock::time_point start = Clock::now();
-    const std::uint64_t sequence = worker.post(command::MoveHandles{drag_handles(center, kRadius, 0.5 * h, k)});
+    const std::uint64_t sequence = worker.post(command::MoveHandles{drag_handles(center, kRadius, 0.5 * h, k), {}});
     while (worker.snapshot()->processed < sequence) std::this_thread::sleep_for(std::chrono::microseconds(200));
     const double wall = 1e3 * std::chrono::duration<double>(Clock::now() - start).count();
     if (k == 1) {

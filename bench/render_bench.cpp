@@ -1,8 +1,8 @@
 // Splat throughput on the current machine's headless OpenGL (the first line says which:
 // backend, device, GL_VERSION, GL_RENDERER): frame time and splats per second for a sphere of
-// 100k and 1M points at 1280x800, framed to fit (default splat size), alone, with normals, and
-// with back faces culled.
-//   amls_render_bench [frames]        (default 10 timed frames per size)
+// 100k and 1M points (or the sizes given) at 1280x800, framed to fit (default splat size), alone,
+// with normals, and with back faces culled.
+//   amls_render_bench [frames [points...]]   (default 10 timed frames per size; 100000 1000000)
 //   AMLS_GL_BACKEND=egl-device|egl-surfaceless|osmesa, AMLS_EGL_DEVICE=N choose the OpenGL.
 #include <chrono>
 #include <cmath>
@@ -11,6 +11,7 @@
 #include <exception>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "core/geometry/shapes.hpp"
 #include "render/gl.hpp"
@@ -40,6 +41,9 @@ double time_frames(const amls::SplatRenderer& renderer, const amls::Camera& came
 
 int main(int argc, char** argv) try {
   const int frames = argc > 1 ? std::max(1, std::atoi(argv[1])) : 10;
+  std::vector<std::size_t> sizes;
+  for (int i = 2; i < argc; ++i) sizes.push_back(std::stoul(argv[i]));
+  if (sizes.empty()) sizes = {100'000, 1'000'000};
   const amls::Viewport viewport{0, 0, 1280, 800};
   amls::OffscreenContext context(viewport.width, viewport.height);
   for (const std::string& failure : context.info().failures)
@@ -49,7 +53,7 @@ int main(int argc, char** argv) try {
   std::printf("%10s %11s %9s %10s %11s %12s %14s\n", "splats", "estimate s", "upload s", "frame ms", "splats/s",
               "+normals ms", "cull back ms");
   amls::SplatRenderer renderer;
-  for (std::size_t count : {std::size_t{100'000}, std::size_t{1'000'000}}) {
+  for (const std::size_t count : sizes) {
     const amls::PointSet<3> sphere = amls::sample_sphere(amls::Vec<3>::Zero(), 1.0, count);
     Clock::time_point start = Clock::now();
     renderer.set_points(sphere);  // spacing estimated from the points
