@@ -339,10 +339,11 @@ def lasso(editor, corners):
 
 def circle_on_sphere(editor, x, y, radius, corners=12):
     """The lasso corners of a circle of `radius` about (x, y) on the front of the unit sphere, on screen, from
-    its left (the side panel's edge is further left; Table 1's window may reach over its right)."""
+    its right: the side panel can reach over the sphere's left half (its width follows its widest line), and
+    Table 1's window lies above the circles drawn here."""
     out = []
     for k in range(corners):
-        a = math.pi * (1 + 2 * k / corners)
+        a = 2 * math.pi * k / corners
         px, py = x + radius * math.cos(a), y + radius * math.sin(a)
         out.append(orbit_to_window(editor, (px, py, math.sqrt(max(0.0, 1 - px * px - py * py)))))
     return out
