@@ -12,6 +12,7 @@
 #include "core/resample/segment_root.hpp"
 #include "core/surface/local_support.hpp"
 #include "core/util/block_join.hpp"
+#include "core/util/parallel_compact.hpp"
 
 namespace amls {
 
@@ -198,7 +199,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
           const std::uint32_t from = first + l;
           const std::uint32_t to =
               (kEdges.inner[axis] >> l) & 1 ? from + stride : upper_first[axis] + l - last * stride;
-          out.push_back({from, to, axis, estimated_crossing(values_[from], values_[to], axis, h, variant)});
+          out.push_back({from, to, axis, estimated_crossing(values_[from], values_[to], axis, h, variant), Vec<D>::Zero()});
         }
       }
     }
@@ -219,13 +220,9 @@ void Resampler<D>::drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid
       inside[c] = inside_rim(rim, h, q, Vec<D>(values_[x.from].gradient + values_[x.to].gradient));
     }
   });
-  std::size_t kept = 0;
-  for (std::size_t c = 0; c < crossings_.size(); ++c) {
-    crossings_[kept] = crossings_[c];
-    kept += inside[c];
-  }
-  stats_.beyond_rim = crossings_.size() - kept;
-  crossings_.resize(kept);
+  const std::size_t listed = crossings_.size();
+  keep_in_order(crossings_, crossings_scratch_, [&](const Crossing&, std::size_t c) { return inside[c] != 0; }, pool);
+  stats_.beyond_rim = listed - crossings_.size();
 }
 
 template <int D>
@@ -298,7 +295,7 @@ std::vector<double>& Resampler<D>::slot_distances() {
 }
 
 template <int D>
-void Resampler<D>::drop_certain_losers(double uncertainty) {
+void Resampler<D>::drop_certain_losers(double uncertainty, ThreadPool& pool) {
   // A crossing at estimated t lies within `uncertainty` of t (assumed), so its
   // distance to an edge end is known to that much, and so is which end is
   // nearer unless t is that close to the middle. At each vertex, the smallest
@@ -310,58 +307,68 @@ void Resampler<D>::drop_certain_losers(double uncertainty) {
   // of them.
   const double eps = uncertainty;
   std::vector<double>& best_bound = slot_distances();
-  // Whether a crossing is nearer to one end or the other is a coin toss, so
-  // both loops select rather than branch.
-  for (const Crossing& x : crossings_) {
-    const bool upper_half = x.t >= 0.5;
-    const bool certain = upper_half ? x.t - eps >= 0.5 : x.t + eps < 0.5;
-    const double bound = certain ? (upper_half ? 1.0 - x.t : x.t) + eps : kFar;
-    double& best = best_bound[upper_half ? x.to : x.from];
-    best = std::min(best, bound);
-  }
-  std::size_t left = 0;
-  for (const Crossing& x : crossings_) {
-    const bool at_from = (x.t - eps < 0.5) & (x.t - eps <= best_bound[x.from]);
-    const bool at_to = (x.t + eps >= 0.5) & (1.0 - x.t - eps <= best_bound[x.to]);
-    crossings_[left] = x;
-    left += static_cast<std::size_t>(at_from | at_to);
-  }
-  crossings_.resize(left);
+  pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t c = begin; c < end; ++c) {
+      const Crossing& x = crossings_[c];
+      const bool upper_half = x.t >= 0.5;
+      const bool certain = upper_half ? x.t - eps >= 0.5 : x.t + eps < 0.5;
+      if (certain) lower_to(best_bound[upper_half ? x.to : x.from], (upper_half ? 1.0 - x.t : x.t) + eps);
+    }
+  });
+  keep_in_order(
+      crossings_, crossings_scratch_,
+      [&](const Crossing& x, std::size_t) {
+        const bool at_from = (x.t - eps < 0.5) & (x.t - eps <= best_bound[x.from]);
+        const bool at_to = (x.t + eps >= 0.5) & (1.0 - x.t - eps <= best_bound[x.to]);
+        return at_from | at_to;
+      },
+      pool);
   // Each bound set above is that of a crossing kept (it may win where its own
   // bound is), so resetting the kept crossings' ends resets them all.
-  for (const Crossing& x : crossings_) best_bound[x.from] = best_bound[x.to] = kFar;
-  stats_.located = left;
+  pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t c = begin; c < end; ++c) {
+      store_shared(best_bound[crossings_[c].from], kFar);
+      store_shared(best_bound[crossings_[c].to], kFar);
+    }
+  });
+  stats_.located = crossings_.size();
 }
 
 template <int D>
-void Resampler<D>::keep_closest_crossings() {
+void Resampler<D>::keep_closest_crossings(ThreadPool& pool) {
   // HAVECLOSEPOINT lets one crossing per vertex through: of the crossings
   // whose nearer edge end is that vertex, the paper keeps the first in walk
   // order; we keep the one nearest to the vertex (ties: the first listed). The
   // curve passes closest to the vertex there, so the kept point sits mid-way
   // between its neighbours instead of at one end of a gap (the effect on
-  // spacings and errors: docs/design.md).
+  // spacings and errors: docs/design.md). The nearest distance per vertex is
+  // found first, then the first crossing listed at it, each as a minimum that
+  // any thread order reaches alike.
   std::vector<double>& closest_distance = slot_distances();
   closest_crossing_.resize(closest_distance.size());
   auto nearer_end = [](const Crossing& x) { return x.t < 0.5 ? x.from : x.to; };
-  // Selects, not branches: which crossing is nearer is unpredictable.
-  for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
-    const Crossing& x = crossings_[k];
-    const std::uint32_t end = nearer_end(x);
-    const double distance = std::min(x.t, 1.0 - x.t);
-    const bool nearer = distance < closest_distance[end];  // strictly: ties keep the first listed
-    closest_distance[end] = nearer ? distance : closest_distance[end];
-    closest_crossing_[end] = nearer ? k : closest_crossing_[end];
-  }
-  std::size_t kept = 0;
-  for (std::uint32_t k = 0; k < crossings_.size(); ++k) {
-    const std::uint32_t end = nearer_end(crossings_[k]);
-    const bool closest = closest_crossing_[end] == k;
-    closest_distance[end] = kFar;  // read no more in this call: every entry set above is reset here
-    crossings_[kept] = crossings_[k];
-    kept += static_cast<std::size_t>(closest);
-  }
-  crossings_.resize(kept);
+  auto distance = [](const Crossing& x) { return std::min(x.t, 1.0 - x.t); };
+  const std::size_t n = crossings_.size();
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t slot = nearer_end(crossings_[k]);
+      lower_to(closest_distance[slot], distance(crossings_[k]));
+      store_shared(closest_crossing_[slot], std::numeric_limits<std::uint32_t>::max());
+    }
+  });
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t slot = nearer_end(crossings_[k]);
+      if (distance(crossings_[k]) == closest_distance[slot])
+        lower_to(closest_crossing_[slot], static_cast<std::uint32_t>(k));
+    }
+  });
+  keep_in_order(
+      crossings_, crossings_scratch_, [&](const Crossing& x, std::size_t k) { return closest_crossing_[nearer_end(x)] == k; }, pool);
+  // Every vertex offered a distance above has exactly one crossing kept.
+  pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k) closest_distance[nearer_end(crossings_[k])] = kFar;
+  });
 }
 
 template <int D>
@@ -375,9 +382,9 @@ PointSet<D> Resampler<D>::resample(const AmlsSurface<D>& surface, Variant varian
   if (!rim.rim.empty()) drop_beyond_rim(rim, grid, pool);
   // Only crossings that may win HAVECLOSEPOINT are located: a third fewer
   // root findings in 2D. The interpolated variant's estimates are its points.
-  drop_certain_losers(variant == Variant::exact ? kEstimateUncertainty : 0.0);
+  drop_certain_losers(variant == Variant::exact ? kEstimateUncertainty : 0.0, pool);
   locate_crossings(surface, variant, pool);
-  keep_closest_crossings();
+  keep_closest_crossings(pool);
 
   PointSet<D> out;
   out.positions.resize(crossings_.size());

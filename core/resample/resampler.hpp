@@ -42,6 +42,7 @@
 
 #include "core/resample/rim_carrying.hpp"
 #include "core/surface/amls_surface.hpp"
+#include "core/util/default_init_allocator.hpp"
 #include "core/util/id_lists.hpp"
 #include "core/geometry/vertex_field.hpp"
 #include "core/geometry/walk_marks.hpp"
@@ -97,13 +98,16 @@ class Resampler {
   const Evaluation<D>* vertex_value(const IVec<D>& vertex) const;
 
  private:
+  // Plain data (no initialisers), so that the lists below grow without a
+  // serial pass that zeroes them (DefaultInitAllocator).
   struct Crossing {
     std::uint32_t from;  // slot of the edge's lower vertex
     std::uint32_t to;    // slot of its upper vertex
     int axis;
-    double t = 0.0;      // position along the edge, 0 at `from`, 1 at `to`: estimated, then located
-    Vec<D> normal = Vec<D>::Zero();
+    double t;            // position along the edge, 0 at `from`, 1 at `to`: estimated, then located
+    Vec<D> normal;       // set when located
   };
+  using Crossings = std::vector<Crossing, DefaultInitAllocator<Crossing>>;
 
   // How far, in h, a crossing's edge midpoint may lie from the centre of the
   // neighbourhood selected for an earlier crossing and still reuse it (see
@@ -127,9 +131,9 @@ class Resampler {
   void drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid, ThreadPool& pool);
   // Cuts crossings_ to those that may win HAVECLOSEPOINT if every estimated
   // position is within `uncertainty` (a fraction of h) of the crossing.
-  void drop_certain_losers(double uncertainty);
+  void drop_certain_losers(double uncertainty, ThreadPool& pool);
   // HAVECLOSEPOINT on the located positions: cuts crossings_ to the kept ones.
-  void keep_closest_crossings();
+  void keep_closest_crossings(ThreadPool& pool);
   // The kept crossings' positions (exact roots or the interpolant's zeros) and normals.
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
@@ -146,7 +150,8 @@ class Resampler {
     Mask positive = 0;
   };
   std::vector<BrickSigns> signs_;
-  std::vector<Crossing> crossings_;
+  Crossings crossings_;
+  Crossings crossings_scratch_;  // keep_in_order()'s other buffer
   // Slot -> a distance to its nearest crossing: drop_certain_losers()' bound
   // on it from the estimates, then keep_closest_crossings()' from the located
   // positions. One array for both (a second one costs peak memory on large

@@ -10,11 +10,12 @@
 
 namespace amls {
 
-// Replaces `out` by the parts one after the other. `out` is resized, not
-// cleared first, so that a vector kept between calls constructs only the
-// items it did not hold yet.
-template <typename T>
-void join_blocks(const std::vector<OwnCacheLine<std::vector<T>>>& parts, std::vector<T>& out, ThreadPool& pool) {
+// Replaces `out` (a vector of T, with any allocator) by the parts one after
+// the other. `out` is resized, not cleared first, so that a vector kept
+// between calls constructs only the items it did not hold yet (and none with
+// DefaultInitAllocator and plain items).
+template <typename T, typename Out>
+void join_blocks(const std::vector<OwnCacheLine<std::vector<T>>>& parts, Out& out, ThreadPool& pool) {
   std::vector<std::size_t> starts(parts.size() + 1, 0);
   for (std::size_t p = 0; p < parts.size(); ++p) starts[p + 1] = starts[p] + parts[p].value.size();
   out.resize(starts.back());

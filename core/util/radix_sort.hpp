@@ -61,13 +61,15 @@ void radix_sort_by_key(std::vector<std::pair<std::uint64_t, Value>>& items,
 
 // The same on `pool`: the same order for any thread count. Below a few
 // thousand items it sorts serially, where the loops' hand-offs would cost
-// more than they share.
+// more than they share. A one-thread pool takes the parallel path too (its
+// loops run inline at the serial sort's cost), so that its serial share
+// measures what more threads would leave serial.
 template <typename Value>
 void radix_sort_by_key(std::vector<std::pair<std::uint64_t, Value>>& items,
                        std::vector<std::pair<std::uint64_t, Value>>& scratch, ThreadPool& pool) {
   using radix_sort_detail::digit;
   constexpr std::size_t kSerialBelow = 16384;
-  if (pool.threads() == 1 || items.size() < kSerialBelow) {
+  if (items.size() < kSerialBelow) {
     radix_sort_by_key(items, scratch);
     return;
   }
