@@ -17,11 +17,21 @@ TEST_CASE("bench: one step on a sampled sphere keeps about the requested number 
   CHECK(c.points_per_second() > 0.0);
   CHECK(c.peak_memory_mib > 0.0);
   CHECK(c.threads == 2);
-  // The step is mostly parallel loops, but not all of it (sorting the points' cells' runs, the crossings' choice).
-  REQUIRE(c.figures.size() == 1);
+  // The step is mostly parallel loops, but not all of it (listing the cells' runs, the joins' prefix sums),
+  // and its serial seconds are told phase by phase: each within its phase, all within the step.
+  REQUIRE(c.figures.size() == 6);
   CHECK(c.figures[0].first == "step_serial_share");
   CHECK(c.figures[0].second > 0.0);
   CHECK(c.figures[0].second < 1.0);
+  double serial_seconds = 0.0;
+  for (std::size_t k = 1; k < c.figures.size(); ++k) {
+    const std::string phase = c.figures[k].first.substr(std::string("serial_s_").size());
+    CHECK(c.figures[k].first == "serial_s_" + phase);
+    CHECK(c.figures[k].second >= 0.0);
+    CHECK(c.figures[k].second <= seconds_of(c.timings, phase));
+    serial_seconds += c.figures[k].second;
+  }
+  CHECK(serial_seconds > 0.0);
 }
 
 TEST_CASE("bench: a case of the suite measures its whole run and the part of it in parallel loops") {

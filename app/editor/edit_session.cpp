@@ -371,7 +371,7 @@ void EditSession<D>::start_local(EditResult& result) {
   local_->set_points(recording_.untouched() ? initial_.points : surface_->points());
   const LocalStepStats all = local_->resample_all();
   add_stats(result, StepStats{all.timings, all.resample.normals, all.resample.resample, all.points_before,
-                              all.points_after});
+                              all.points_after, {}});
   ++result.resamples;
 }
 
@@ -421,7 +421,7 @@ EditResult EditSession<D>::move_handles_locally(const MlsDeformation<D>& deforma
     if (!phases.next("deforming, resampling where strained")) return false;
     const LocalStepStats step = local_->step(deformation);
     add_stats(result, StepStats{step.timings, step.resample.normals, step.resample.resample, step.points_before,
-                                step.points_after});
+                                step.points_after, {}});
     if (step.resample.flagged_cells > 0) ++result.resamples;
     return true;
   });

@@ -126,6 +126,8 @@ BenchCase bench_sphere_step(std::size_t points, int threads) {
   c.threads = threads;
   c.result = std::to_string(stats.points_after) + " points after, h = " + std::to_string(h);
   c.figures = {{"step_serial_share", step.serial_share()}};
+  // Where the step's serial seconds are, phase by phase.
+  for (const PhaseTime& phase : stats.serial.phases()) c.figures.emplace_back("serial_s_" + phase.phase, phase.seconds);
   return c;
 }
 

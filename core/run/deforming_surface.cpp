@@ -1,6 +1,6 @@
 #include "core/run/deforming_surface.hpp"
 
-#include "core/util/stopwatch.hpp"
+#include "core/util/parallel_stopwatch.hpp"
 
 namespace amls {
 
@@ -12,6 +12,17 @@ PhaseTimings& PhaseTimings::operator+=(const PhaseTimings& o) {
   hash += o.hash;
   return *this;
 }
+
+namespace {
+
+// Ends the current phase: its seconds, and those of them outside parallel loops.
+void end_phase(ParallelStopwatch& clock, double& seconds, double& serial_seconds) {
+  const ParallelLap lap = clock.lap();
+  seconds = lap.wall;
+  serial_seconds = lap.wall - lap.parallel;
+}
+
+}  // namespace
 
 PhaseTimes PhaseTimings::phases() const {
   return {{"normals", normals}, {"function", function}, {"resample", resample}, {"deform", deform}, {"hash", hash}};
@@ -30,15 +41,15 @@ void DeformingSurface<D>::set_points(PointSet<D> points) {
 
 template <int D>
 void DeformingSurface<D>::resample_phases(StepStats& stats) {
-  Stopwatch clock;
+  ParallelStopwatch clock;
   stats.normals = surface_.update_normals(pool_);
-  stats.timings.normals = clock.lap();
+  end_phase(clock, stats.timings.normals, stats.serial.normals);
   resampler_.update_function(surface_, pool_);
-  stats.timings.function = clock.lap();
+  end_phase(clock, stats.timings.function, stats.serial.function);
   PointSet<D> resampled = resampler_.resample(surface_, variant_, pool_);
   stats.resample = resampler_.stats();
   surface_.set_points(std::move(resampled));
-  stats.timings.resample = clock.lap();
+  end_phase(clock, stats.timings.resample, stats.serial.resample);
 }
 
 template <int D>
@@ -46,11 +57,11 @@ StepStats DeformingSurface<D>::step(const Deformation<D>& deformation, double t0
   StepStats stats;
   stats.points_before = surface_.points().size();
   if (resample) resample_phases(stats);
-  Stopwatch clock;
+  ParallelStopwatch clock;
   deformation.deform(surface_.mutable_points(), t0, t1, pool_);
-  stats.timings.deform = clock.lap();
+  end_phase(clock, stats.timings.deform, stats.serial.deform);
   surface_.hash_points(pool_);
-  stats.timings.hash = clock.lap();
+  end_phase(clock, stats.timings.hash, stats.serial.hash);
   stats.points_after = surface_.points().size();
   return stats;
 }
@@ -60,9 +71,9 @@ StepStats DeformingSurface<D>::resample_only() {
   StepStats stats;
   stats.points_before = surface_.points().size();
   resample_phases(stats);
-  Stopwatch clock;
+  ParallelStopwatch clock;
   surface_.hash_points(pool_);
-  stats.timings.hash = clock.lap();
+  end_phase(clock, stats.timings.hash, stats.serial.hash);
   stats.points_after = surface_.points().size();
   return stats;
 }

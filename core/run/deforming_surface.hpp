@@ -27,6 +27,9 @@ struct StepStats {
   ResampleStats resample;
   std::size_t points_before = 0;  // points entering the step
   std::size_t points_after = 0;   // points leaving it (after resampling and deformation)
+  // Of each phase's seconds, those outside parallel loops: on one thread, the
+  // part that more threads cannot share (core/util/parallel_stopwatch.hpp).
+  PhaseTimings serial;
 };
 
 template <int D>
