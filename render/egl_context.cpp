@@ -178,8 +178,14 @@ void require_egl_client_extensions(std::initializer_list<const char*> names) {
   if (client.empty())
     throw std::runtime_error("libEGL lists no client extensions: it found no EGL driver (Mesa's is libegl-mesa0; "
                              "glvnd reads the drivers from /usr/share/glvnd/egl_vendor.d)");
-  for (const char* name : names)
-    if (!has_extension(client, name)) throw std::runtime_error(std::string("libEGL lacks ") + name);
+  // EGL_EXT_device_base is the older name of device_enumeration and device_query together,
+  // and the one NVIDIA's driver lists.
+  const bool device_base = has_extension(client, "EGL_EXT_device_base");
+  for (const std::string name : names) {
+    const bool in_base = name == "EGL_EXT_device_enumeration" || name == "EGL_EXT_device_query";
+    if (!has_extension(client, name.c_str()) && !(in_base && device_base))
+      throw std::runtime_error("libEGL lacks " + name + " (it lists: " + client + ")");
+  }
 }
 
 EGLDisplay egl_platform_display(EGLenum platform, void* native_display, const char* platform_extension) {
