@@ -70,6 +70,12 @@ class Editor:
                                          *arguments], stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         self.window = wait_for(self.find_window, "the editor's window")
         xdotool("windowfocus", "--sync", self.window)
+        self.releases = 0  # mouse buttons let go so far, each of which the editor logs
+
+    def let_go(self, *action):
+        """xdotool's mouseup or click: a button let go, which wait_idle() waits for the editor to read."""
+        xdotool(*action)
+        self.releases += 1
 
     def find_window(self):
         if self.process.poll() is not None:
@@ -99,12 +105,16 @@ class Editor:
         return wait_for(find, what or pattern, timeout)
 
     def wait_idle(self):
-        """Waits until the worker has applied everything (two idle frames after the newest snapshot)."""
+        """Waits until the editor has read every mouse button let go so far (a slow build, under a sanitizer,
+        may still be working through a drag's motion when the test lets go) and the worker has applied
+        everything: two idle frames after both the newest snapshot and the last release."""
         def idle():
             lines = self.lines()
+            released = [i for i, l in enumerate(lines) if re.search(r" button \d+ action=0 ", l)]
             last_snapshot = max((i for i, l in enumerate(lines) if " snapshot " in l), default=-1)
-            idle_frames = [l for l in lines[last_snapshot + 1:] if re.search(r" frame \d+ busy=0", l)]
-            return len(idle_frames) >= 2
+            after = max(last_snapshot, released[-1] if released else -1)
+            idle_frames = [l for l in lines[after + 1:] if re.search(r" frame \d+ busy=0", l)]
+            return len(released) >= self.releases and len(idle_frames) >= 2
         wait_for(idle, "the worker to be idle")
 
     def view(self):
@@ -206,7 +216,7 @@ def drag(editor, start, end, steps=12):
         time.sleep(0.04)
         editor.move(round(start[0] + (end[0] - start[0]) * k / steps), round(start[1] + (end[1] - start[1]) * k / steps))
     time.sleep(0.2)
-    xdotool("mouseup", 1)
+    editor.let_go("mouseup", 1)
 
 
 def shift_click(editor, at):
@@ -214,7 +224,7 @@ def shift_click(editor, at):
     time.sleep(0.2)
     xdotool("keydown", "shift")
     time.sleep(0.1)
-    xdotool("click", 1)
+    editor.let_go("click", 1)
     time.sleep(0.1)
     xdotool("keyup", "shift")
 
@@ -294,7 +304,7 @@ def test_2d(binary, folder):
     time.sleep(0.3)
     editor.key("Escape")
     time.sleep(0.1)
-    xdotool("mouseup", 1)
+    editor.let_go("mouseup", 1)
     check(export(editor, out, 3) == before, "Esc restores the point set of mouse-down")
     drag(editor, editor.to_window(max(xs), 0.0), editor.to_window(max(xs), 0.4), steps=6)
     moved = export(editor, out, 4)
@@ -332,7 +342,7 @@ def lasso(editor, corners):
         time.sleep(0.04)
         editor.move(*corner)
     time.sleep(0.2)
-    xdotool("mouseup", 1)
+    editor.let_go("mouseup", 1)
     time.sleep(0.1)
     xdotool("keyup", "alt")
 

@@ -30,6 +30,22 @@ TEST_CASE("queued handle moves coalesce: the newest position wins and takes the 
   CHECK(move.sequence == last);
 }
 
+TEST_CASE("coalesced moves keep the newest regions' motions too, not only the handles' places") {
+  CommandQueue queue;
+  auto move_region_to = [](double x) {
+    command::RegionMove region;
+    region.translation = Vec<3>(x, 0.0, 0.0);
+    return command::MoveHandles{{Vec<3>::Zero()}, {region}};
+  };
+  queue.push(move_region_to(0.1));
+  queue.push(move_region_to(0.2));
+  queue.push(move_region_to(0.3));
+  REQUIRE(queue.size() == 1);
+  const auto move = std::get<command::MoveHandles>(queue.pop()->command);
+  REQUIRE(move.regions.size() == 1);
+  CHECK(move.regions[0].translation.x() == 0.3);
+}
+
 TEST_CASE("moves separated by another command are kept apart, in order") {
   CommandQueue queue;
   queue.push(move_to(1.0));

@@ -16,8 +16,8 @@ std::uint64_t CommandQueue::push(Command command) {
                     [](const QueuedCommand& q) { return std::holds_alternative<command::MoveHandles>(q.command); });
     auto* move = std::get_if<command::MoveHandles>(&command);
     auto* last = queue_.empty() ? nullptr : std::get_if<command::MoveHandles>(&queue_.back().command);
-    if (move && last) {
-      last->positions = std::move(move->positions);
+    if (move && last) {  // the newest move wins whole: its handles' and its regions' places
+      *last = std::move(*move);
       queue_.back().sequence = sequence;
       return sequence;
     }

@@ -243,15 +243,17 @@ void EditorApp::process_input() {
     const bool starts = (event.type == InputEvent::Type::button && event.action == GLFW_PRESS) ||
                         event.type == InputEvent::Type::scroll;
     if (starts && io.WantCaptureMouse) continue;
-    if (!view_.dragging() &&
-        regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
-      continue;
+    // Logged before the region tool or the view takes it, so that a test can tell that every button it
+    // let go has been read.
     if (event.type == InputEvent::Type::button)
       log_.line([&] {
         return "button " + std::to_string(event.code) + " action=" + std::to_string(event.action) +
                " mods=" + std::to_string(event.mods) + " at " + std::to_string(event.position.x) + "," +
                std::to_string(event.position.y);
       });
+    if (!view_.dragging() &&
+        regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
+      continue;
     view_.on_event(event, viewport, scale);
   }
   view_.update(viewport, io.KeyShift, io.WantCaptureMouse);
