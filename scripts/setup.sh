@@ -12,6 +12,8 @@ packages=(
   libeigen3-dev doctest-dev libcli11-dev nlohmann-json3-dev libnanoflann-dev
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libegl-dev libosmesa6-dev libgl1-mesa-dev python3-glad
   xvfb xauth xdotool
+  # The Python module (python/) and its tests: pybind11, numpy, pytest, and Open3D as a real client.
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-open3d
 )
 
 "$repo_root/scripts/install_packages.sh" "${packages[@]}"
