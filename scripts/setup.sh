@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages amls needs (only the missing ones), then
 # configures and builds it in ./build (Release). Run by run.sh and test.sh;
-# extra arguments are passed to cmake's configure step.
+# extra arguments are passed to cmake's configure step. AMLS_BUILD_TARGETS
+# (space-separated) builds only those targets, and what they need, instead of
+# the whole tree (run.sh builds only `amls`).
 set -euo pipefail
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -19,4 +21,9 @@ packages=(
 "$repo_root/scripts/install_packages.sh" "${packages[@]}"
 
 cmake -S "$repo_root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
-cmake --build "$build_dir" --parallel "$(nproc)"
+targets=()
+if [[ -n "${AMLS_BUILD_TARGETS:-}" ]]; then
+  read -r -a names <<<"$AMLS_BUILD_TARGETS"
+  targets=(--target "${names[@]}")
+fi
+cmake --build "$build_dir" --parallel "$(nproc)" "${targets[@]}"

@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <vector>
