@@ -1,5 +1,6 @@
 #include "python/array_conversion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -60,7 +61,7 @@ PointSet<D> point_set_from(const py::handle& points, const py::handle& normals) 
 
 template <int D>
 std::vector<Vec<D>> positions_from(const py::handle& x, const char* name, bool& single) {
-  const Array a = as_array(x, name);
+  Array a = as_array(x, name);
   single = a.ndim() == 1;
   if (!single) return vectors_from<D>(x, name, true);
   if (a.shape(0) != D)

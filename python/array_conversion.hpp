@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
+#include "core/io/point_set_io.hpp"
 
 namespace amls::python {
 
@@ -36,6 +37,16 @@ std::vector<Vec<D>> positions_from(const py::handle& x, const char* name, bool& 
 
 template <int D>
 Array to_array(const std::vector<Vec<D>>& vectors);
+
+// A set of either dimension held in 3D (z = 0 in 2D), as results cross from the released work.
+template <int D>
+PointSet<3> held_in_3d(const PointSet<D>& points) {
+  if constexpr (D == 2) {
+    return to_3d(points);
+  } else {
+    return points;
+  }
+}
 
 Array to_array(const std::vector<double>& values);
 

@@ -1,6 +1,4 @@
 // read, write, read_mesh: the core's readers and writers (core/io).
-#include <optional>
-
 #include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
 #include "python/array_conversion.hpp"
@@ -16,7 +14,7 @@ py::object normals_or_none(const PointSet<3>& points, bool has_normals, int dime
   return dimension == 2 ? py::object(to_array(to_2d(points).normals)) : py::object(to_array(points.normals));
 }
 
-py::tuple read(const std::string& path, int dim) {
+py::tuple read_file(const std::string& path, int dim) {
   if (dim != 0 && dim != 2 && dim != 3) throw std::invalid_argument("dim: must be 0 (from the file), 2 or 3");
   LoadedPointSet loaded;
   run_released([&] { loaded = read_point_set(path, dim); }, {true, path});
@@ -33,7 +31,7 @@ void write_set(const std::string& path, const py::handle& points, const py::hand
   run_released([&] { write_point_set(path, set, format, spacing); }, {true, ""});
 }
 
-void write(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
+void write_file(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
   if (dimension_of(points, "points") == 2) {
     write_set<2>(path, points, normals, spacing);
   } else {
@@ -50,7 +48,7 @@ py::tuple read_mesh_file(const std::string& path) {
 }  // namespace
 
 void bind_files(py::module_& m) {
-  m.def("read", &read, py::arg("path"), py::arg("dim") = 0,
+  m.def("read", &read_file, py::arg("path"), py::arg("dim") = 0,
         R"(read(path, dim=0) -> (points, normals)
 
 Reads a point set, as `amls resample` does: PLY (ASCII, binary little and big endian), OFF, and text
@@ -66,7 +64,7 @@ file has none. Small defects are repaired with a warning (UserWarning), as on th
 non-finite points dropped, duplicates merged, bad normals re-estimated.
 Raises FileNotFoundError for a missing file, OSError for one that cannot be read or parsed (the
 message names the file and the line or vertex), ValueError for an extension no reader takes.)");
-  m.def("write", &write, py::arg("path"), py::arg("points"), py::arg("normals") = py::none(),
+  m.def("write", &write_file, py::arg("path"), py::arg("points"), py::arg("normals") = py::none(),
         py::arg("spacing") = 0.0,
         R"(write(path, points, normals=None, spacing=0.0)
 

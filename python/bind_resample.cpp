@@ -1,6 +1,5 @@
 // resample and mesh: `amls resample` on arrays (core/run/point_set_resampling,
 // core/run/mesh_export), with its defaults, checks and report.
-#include <memory>
 #include <optional>
 
 #include "core/io/mesh_writer.hpp"
@@ -43,15 +42,15 @@ void resample_opened(const OpenedShape& shape, const std::string& input, PointSe
     export_surface_mesh(mesh_path, result.points, result.grid, AmlsParameters{options.radius_factor}, options.variant,
                         options.threads);
   out.dimension = D;
-  out.points = to_3d(result.points);
+  out.points = held_in_3d(result.points);
   out.report = resampling_report_json(result, options, run).dump();
   out.clear_loss = result.coverage.clear_loss();
   if (out.clear_loss) out.loss_message = (input.empty() ? std::string("points") : input) + ": " + result.coverage.loss_message();
 }
 
 // Opens the shape (h chosen, normals estimated) on the released thread.
-OpenedShape open(const ShapeArguments& shape, const std::string& path, std::optional<SurfaceInput>& arrays,
-                 const ShapeOpening& opening, ThreadPool& pool) {
+OpenedShape open_input(const std::string& path, std::optional<SurfaceInput>& arrays, const ShapeOpening& opening,
+                       ThreadPool& pool) {
   if (!path.empty()) return open_shape_file(path, opening, pool);
   return open_shape(std::move(*arrays), opening, pool);
 }
@@ -72,7 +71,7 @@ py::tuple resample(py::object points, py::object normals, py::object spacing, py
   run_released(
       [&] {
         ThreadPool pool(threads);
-        OpenedShape opened = open(shape, path, arrays, opening, pool);
+        OpenedShape opened = open_input(path, arrays, opening, pool);
         out.warnings = opened.warnings;
         PointSetResampling options = opening.resampling;
         options.spacing = opened.spacing.h;
@@ -132,7 +131,7 @@ py::tuple mesh(py::object points, py::object normals, py::object spacing, py::ob
   run_released(
       [&] {
         ThreadPool pool(threads);
-        const OpenedShape opened = open(shape, path, arrays, opening, pool);
+        const OpenedShape opened = open_input(path, arrays, opening, pool);
         dimension = opened.dimension;
         if (dimension == 2) {
           mesh_of<2>(opened, opening.resampling, out, pool, mesh2);

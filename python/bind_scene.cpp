@@ -21,7 +21,7 @@ struct SceneResult {
 
 template <int D>
 void run(const Scene<D>& scene, const SceneRunOptions& options, SceneResult& out) {
-  const FrameSink<D> last = [&](std::size_t, const PointSet<D>& points) { out.points = to_3d(points); };
+  const FrameSink<D> last = [&](std::size_t, const PointSet<D>& points) { out.points = held_in_3d(points); };
   const SceneRunReport report = run_scene<D>(scene, options, last);
   out.dimension = D;
   out.report = scene_report_json(report).dump();
@@ -43,15 +43,15 @@ py::tuple run_scene_file(const std::string& path, const std::string& resample, i
     throw py::error_already_set();
   }
   SceneResult out;
-  std::string scene_error;
   run_released([&] {
-    AnyScene scene;
-    try {
-      scene = read_scene(path);
-    } catch (const std::runtime_error& e) {
-      // Not the file but its contents: a key, a value out of range, bad JSON.
-      throw std::invalid_argument(e.what());
-    }
+    const AnyScene scene = [&] {
+      try {
+        return read_scene(path);
+      } catch (const std::runtime_error& e) {
+        // Not the file but its contents: a key, a value out of range, bad JSON.
+        throw std::invalid_argument(e.what());
+      }
+    }();
     if (const Scene<2>* s2 = std::get_if<Scene<2>>(&scene)) {
       run<2>(*s2, options, out);
     } else {

@@ -1,13 +1,12 @@
 // Surface and MlsDeformation: the paper's loop (core/run/deforming_surface)
 // driven step by step from Python, as `amls deform` drives it from a scene.
-#include <pybind11/stl.h>
-
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <variant>
 
 #include "core/deform/mls_deformation.hpp"
+#include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/resample/mesh_extraction.hpp"
 #include "core/run/deforming_surface.hpp"
@@ -95,10 +94,16 @@ class SurfaceOf {
     return s;
   }
 
+  // As a scene's step under `always` (core/run/settle.hpp, scene_run.cpp): the resample on its own,
+  // then the deformation alone - which leaves the points in the scene's order, bit for bit.
   StepStats step(const Handles& from, const std::vector<Vec<3>>& to, bool resample) {
     const MlsDeformation<D> deformation(from_3d<D>(from.positions), from_3d<D>(to), from.kind, from.alpha);
-    const StepStats s = loop_.step(deformation, 0.0, 1.0, resample);
     evaluable_ = false;
+    if (!resample) return loop_.step(deformation, 0.0, 1.0, false);
+    StepStats s = loop_.resample_only();
+    const StepStats deformed = loop_.step(deformation, 0.0, 1.0, false);
+    s.timings += deformed.timings;
+    s.points_after = deformed.points_after;
     return s;
   }
 
@@ -108,6 +113,20 @@ class SurfaceOf {
 };
 
 class Surface {
+ private:
+  template <typename Fn>
+  auto visit(Fn&& fn) {
+    if (surface_.index() == 1) return fn(*std::get<1>(surface_));
+    return fn(*std::get<2>(surface_));
+  }
+  // One call at a time: the loop is not made for concurrent use.
+  void run_locked(const std::function<void()>& work) {
+    run_released([&] {
+      std::lock_guard lock(mutex_);
+      work();
+    });
+  }
+
  public:
   Surface(py::object points, py::object normals, py::object h, py::object grid, double radius_factor,
           const std::string& variant, bool uniform_support, int threads) {
@@ -212,19 +231,6 @@ class Surface {
   }
 
  private:
-  template <typename Fn>
-  auto visit(Fn&& fn) {
-    if (surface_.index() == 1) return fn(*std::get<1>(surface_));
-    return fn(*std::get<2>(surface_));
-  }
-  // One call at a time: the loop is not made for concurrent use.
-  void run_locked(const std::function<void()>& work) {
-    run_released([&] {
-      std::lock_guard lock(mutex_);
-      work();
-    });
-  }
-
   std::variant<std::monostate, std::unique_ptr<SurfaceOf<2>>, std::unique_ptr<SurfaceOf<3>>> surface_;
   double h_ = 0.0;
   std::mutex mutex_;

@@ -7,12 +7,16 @@ import math
 import os
 import subprocess
 
+import sys
+
 import numpy as np
 import pytest
 
 SOURCE_DIR = os.environ.get("AMLS_SOURCE_DIR", os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..")))
 CLI = os.environ.get("AMLS_CLI", os.path.join(SOURCE_DIR, "build", "app", "amls"))
 CGAL_DATA = os.environ.get("AMLS_CGAL_DATA", os.path.join(SOURCE_DIR, "build", "cgal_data", "data"))
+# The Open3D watertightness check the tests share with python/checks/cgal_watertight.py.
+sys.path.insert(0, os.path.join(SOURCE_DIR, "python", "checks"))
 
 
 def sphere(count, radius=0.3, center=(0.5, 0.5, 0.5)):

@@ -9,16 +9,16 @@ import time
 
 from conftest import sphere
 
-# A resampling that runs for many seconds here: a 200k-point sphere on a fine grid.
+# A resampling that runs for many seconds here: a 100k-point sphere on a fine grid (about a million points out).
 LONG_WORK = textwrap.dedent("""
     import sys, time
     sys.path.insert(0, {tests!r})
     import amls
     from conftest import sphere
-    points, normals = sphere(200000)
+    points, normals = sphere(100000)
     print("started", flush=True)
     try:
-        amls.resample(points, normals, grid=1400, uniform_support=True, threads=2)
+        amls.resample(points, normals, grid=800, uniform_support=True, threads=2)
         print("finished", flush=True)
     except KeyboardInterrupt:
         print("interrupted %.3f" % time.monotonic(), flush=True)

@@ -13,8 +13,8 @@ def test_the_kitten_scan_resamples_to_the_command_lines_bytes(amls, tmp_path):
     cli_out, cli_report = tmp_path / "cli.ply", tmp_path / "cli.json"
     run_cli("resample", kitten, "--out", cli_out, "--json", cli_report)
     points, normals = amls.read(kitten)
-    assert normals is None
-    new_points, new_normals, report = amls.resample(points)
+    assert points.shape == (5210, 3) and normals.shape == (5210, 3)
+    new_points, new_normals, report = amls.resample(points, normals)
     amls.write(str(tmp_path / "py.ply"), new_points, new_normals, spacing=report["h"])
     assert (tmp_path / "py.ply").read_bytes() == cli_out.read_bytes()
     # The same from the path, and the same report keys and counts as --json.
@@ -74,12 +74,18 @@ def test_out_of_range_arguments_raise_with_the_command_lines_messages(amls, argu
 
 
 def test_a_clear_loss_raises_unless_accepted(amls):
-    # Half a sphere's points with a tiny support: the output leaves much of the input uncovered.
+    # A sphere dense above its equator and 20 times sparser below, resampled with one support Delta
+    # for all: holes open in the sparse half, and the coverage check says so.
     points, normals = sphere(20000)
-    with pytest.raises(RuntimeError, match="accept_loss"):
-        amls.resample(points[::7], normals[::7], grid=400, uniform_support=True, radius_factor=1.5)
+    keep = (points[:, 2] > 0.5) | (np.arange(len(points)) % 20 == 0)
+    arguments = dict(grid=128, uniform_support=True)
+    with pytest.raises(RuntimeError, match=r"points: the output misses part of the input: .*accept_loss=True"):
+        amls.resample(points[keep], normals[keep], **arguments)
     with pytest.warns(UserWarning, match="accepted"):
-        amls.resample(points[::7], normals[::7], grid=400, uniform_support=True, radius_factor=1.5, accept_loss=True)
+        _, _, report = amls.resample(points[keep], normals[keep], accept_loss=True, **arguments)
+    assert report["coverage"]["clear_loss"] is True
+    # Widened supports (the default) close the sparse half.
+    assert amls.resample(points[keep], normals[keep], grid=128)[2]["coverage"]["clear_loss"] is False
 
 
 def test_help_reads_like_the_command_lines(amls):

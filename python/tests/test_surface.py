@@ -12,10 +12,13 @@ STEPS = 4
 
 
 def drag_targets(step):
-    """The scene's top handle pulled up by h/2 a step; the others fixed."""
-    targets = np.array(HANDLES)
-    targets[3, 2] += 0.5 * H * step
-    return targets
+    """The scene's top handle pulled up by h/2 a step, the others fixed: the handles after `step` of
+    STEPS steps, computed as the scene computes them, (1 - t) start + t end (so bit for bit the same)."""
+    start = np.array(HANDLES)
+    end = start.copy()
+    end[3, 2] += 0.5 * H * STEPS
+    t = step / STEPS
+    return (1.0 - t) * start + t * end
 
 
 def write_scene(amls, path, points, normals):
