@@ -85,6 +85,14 @@ Array to_array(const std::vector<double>& values) {
   return out;
 }
 
+std::pair<py::object, py::object> points_and_normals(const PointSet<3>& held, int dimension) {
+  if (dimension == 2) {
+    const PointSet<2> p = to_2d(held);
+    return {to_array(p.positions), to_array(p.normals)};
+  }
+  return {to_array(held.positions), to_array(held.normals)};
+}
+
 template <std::size_t K>
 py::array_t<std::int64_t> cells_to_array(const std::vector<std::array<std::uint32_t, K>>& cells) {
   py::array_t<std::int64_t> out({static_cast<py::ssize_t>(cells.size()), static_cast<py::ssize_t>(K)});

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
@@ -49,6 +50,9 @@ PointSet<3> held_in_3d(const PointSet<D>& points) {
 }
 
 Array to_array(const std::vector<double>& values);
+
+// A set held in 3D as the arrays of its dimension: positions and normals, (n, 2) or (n, 3).
+std::pair<py::object, py::object> points_and_normals(const PointSet<3>& held, int dimension);
 
 // (m, 3) int64 triangles, or (m, 2) segments.
 template <std::size_t K>

@@ -92,16 +92,8 @@ py::tuple resample(py::object points, py::object normals, py::object spacing, py
                                "radius_factor widens every support); accept_loss=True takes this output as a success");
     warn_all({out.loss_message + " (accepted: accept_loss=True)"});
   }
-  py::object positions, normal_array;
-  if (out.dimension == 2) {
-    const PointSet<2> p = to_2d(out.points);
-    positions = to_array(p.positions);
-    normal_array = to_array(p.normals);
-  } else {
-    positions = to_array(out.points.positions);
-    normal_array = to_array(out.points.normals);
-  }
-  return py::make_tuple(positions, normal_array, to_python(out.report));
+  const auto [positions, new_normals] = points_and_normals(out.points, out.dimension);
+  return py::make_tuple(positions, new_normals, to_python(out.report));
 }
 
 template <int D>

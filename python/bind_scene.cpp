@@ -59,15 +59,7 @@ py::tuple run_scene_file(const std::string& path, const std::string& resample, i
     }
   });
   warn_all(out.warnings);
-  py::object positions, normals;
-  if (out.dimension == 2) {
-    const PointSet<2> p = to_2d(out.points);
-    positions = to_array(p.positions);
-    normals = to_array(p.normals);
-  } else {
-    positions = to_array(out.points.positions);
-    normals = to_array(out.points.normals);
-  }
+  const auto [positions, normals] = points_and_normals(out.points, out.dimension);
   return py::make_tuple(positions, normals, to_python(out.report));
 }
 

@@ -68,11 +68,63 @@ bool closes_one_fan(std::uint32_t v, const std::vector<Triangle>& triangles) {
   return false;
 }
 
+// Where the surface folds sharply within a cluster (a thin fin), two triangles can become the same
+// triangle run both ways: a flat pillow enclosing nothing. Both go, as the fold they stood for.
+void cancel_folded_pairs(std::vector<Triangle>& kept, std::vector<std::uint32_t>& ids) {
+  std::vector<std::size_t> order(kept.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  auto sorted = [&](std::size_t k) {
+    Triangle t = kept[k];
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sorted(a) < sorted(b); });
+  std::vector<bool> gone(kept.size(), false);
+  for (std::size_t k = 0; k + 1 < order.size(); ++k) {
+    const std::size_t a = order[k], b = order[k + 1];
+    if (gone[a] || sorted(a) != sorted(b)) continue;
+    // Opposite orientations: b is a read backwards, i.e. not one of a's rotations.
+    const Triangle& ta = kept[a];
+    const Triangle& tb = kept[b];
+    bool same = false;
+    for (int r = 0; r < 3; ++r)
+      same = same || (tb[0] == ta[static_cast<std::size_t>(r)] && tb[1] == ta[static_cast<std::size_t>((r + 1) % 3)]);
+    if (same) continue;
+    gone[a] = gone[b] = true;
+  }
+  std::size_t out = 0;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    if (gone[k]) continue;
+    kept[out] = kept[k];
+    ids[out++] = ids[k];
+  }
+  kept.resize(out);
+  ids.resize(out);
+}
+
+// V - E + F, and the facet counts, of the mesh: what a merge must keep.
+struct Shape {
+  MeshTopology topology;
+  long euler = 0;
+};
+
+Shape shape_of(const SurfaceMesh<3>& mesh) {
+  Shape out;
+  out.topology = mesh_topology(mesh);
+  out.euler = static_cast<long>(mesh.vertices.size()) - static_cast<long>(out.topology.facets) +
+              static_cast<long>(mesh.cells.size());
+  return out;
+}
+
 }  // namespace
 
 std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double reach) {
   const std::vector<std::vector<std::uint32_t>> clusters = clusters_of(mesh, grid, reach);
   if (clusters.empty()) return 0;
+  // Each merge is checked where it happens; the whole is checked once more at the end, and the
+  // mesh given back as it was should a merge have changed its topology after all.
+  SurfaceMesh<3> original = mesh;
+  const Shape before = shape_of(mesh);
   const std::size_t n = mesh.vertices.size();
   // The triangles around each vertex (indices into mesh.cells).
   std::vector<std::uint32_t> first(n + 1, 0), around;
@@ -111,6 +163,7 @@ std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double r
       kept.push_back(t);
       kept_ids.push_back(c);
     }
+    cancel_folded_pairs(kept, kept_ids);
     if (!closes_one_fan(v, kept)) continue;
     Vec<3> position = Vec<3>::Zero(), normal = Vec<3>::Zero();
     for (std::uint32_t m : cluster) {
@@ -128,11 +181,18 @@ std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double r
     removed += cluster.size() - 1;
   }
   if (removed == 0) return 0;
-  // Drop the dead triangles and the merged vertices, keeping the order of the rest.
+  // Drop the dead triangles and the vertices no triangle uses any more (the merged ones, and any a
+  // cancelled fold left alone), keeping the order of the rest.
+  std::vector<bool> used(n, false);
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c)
+    if (alive[c])
+      for (std::uint32_t u : mesh.cells[c]) used[u] = true;
   std::vector<std::uint32_t> index(n, 0);
   std::uint32_t next = 0;
+  std::size_t unused_before = 0;
+  for (std::uint32_t i = 0; i < n; ++i) unused_before += static_cast<std::size_t>(first[i] == first[i + 1]);
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (merged_into[i] != i) continue;
+    if (!used[i]) continue;
     index[i] = next;
     mesh.vertices[next] = mesh.vertices[i];
     mesh.normals[next] = mesh.normals[i];
@@ -147,7 +207,16 @@ std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double r
     mesh.cells[out++] = mesh.cells[c];
   }
   mesh.cells.resize(out);
-  return removed;
+  const Shape after = shape_of(mesh);
+  const bool kept_shape = after.topology.boundary == before.topology.boundary &&
+                          after.topology.non_manifold <= before.topology.non_manifold &&
+                          after.topology.misoriented <= before.topology.misoriented &&
+                          after.euler + static_cast<long>(unused_before) == before.euler;
+  if (!kept_shape) {
+    mesh = std::move(original);
+    return 0;
+  }
+  return n - mesh.vertices.size();
 }
 
 }  // namespace amls
