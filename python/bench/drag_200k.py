@@ -42,10 +42,14 @@ def sphere(count, radius=0.3):
     return 0.5 + radius * normals, normals
 
 
-def targets(h, step):
-    t = np.array(HANDLES)
-    t[3, 2] += 0.5 * h * step
-    return t
+def targets(h, step, steps):
+    """The handles after `step` of `steps`: the top one pulled out by h/2 a step, computed as the
+    scene computes them, (1 - t) start + t end, so that both sides map by the same doubles."""
+    start = np.array(HANDLES)
+    end = start.copy()
+    end[3, 2] += 0.5 * h * steps
+    t = step / steps
+    return (1.0 - t) * start + t * end
 
 
 PYTHON_SIDE = r"""
@@ -62,7 +66,7 @@ deformation = amls.MlsDeformation(np.array(args["handles"]), kind="rigid")
 loop_start = time.perf_counter()
 surface_seconds = 0.0
 for step in range(1, args["steps"] + 1):
-    surface_seconds += surface.step(deformation, targets(args["h"], step))["timings_s"]["total"]
+    surface_seconds += surface.step(deformation, targets(args["h"], step, args["steps"]))["timings_s"]["total"]
 surface_seconds += surface.resample()["timings_s"]["total"]
 end = time.perf_counter()
 amls.write(args["out"], surface.points, surface.normals)
@@ -96,7 +100,7 @@ def main():
                    "shape": {"type": "file", "path": "sphere.ply"}, "grid": {"spacing": h},
                    "radius_factor": 3.0, "variant": "exact", "deformation": {"kind": "rigid", "alpha": 1.0},
                    "stages": [{"handles": HANDLES,
-                               "targets": [{"steps": args.steps, "handles": targets(h, args.steps).tolist()}]}]}, f)
+                               "targets": [{"steps": args.steps, "handles": targets(h, args.steps, args.steps).tolist()}]}]}, f)
 
     print(f"{args.points} points on the sphere, h = {h:.6g}, {args.steps} steps, {args.threads} thread(s)")
     rows = []
