@@ -15,6 +15,7 @@
 #include "core/io/mesh_writer.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
+#include "core/run/scene_report_json.hpp"
 #include "core/util/interrupt.hpp"
 #include "core/util/staged_directory.hpp"
 
@@ -99,7 +100,7 @@ void run(const Scene<D>& scene, const DeformOptions& options, const ResamplePoli
   } else if (!options.mesh_path.empty()) {
     std::cerr << "amls: warning: no mesh written: the run stopped before step " << steps << "\n";
   }
-  const nlohmann::json json = to_json(report);
+  const nlohmann::json json = scene_report_json(report);
   if (!options.json_path.empty()) write_json_file(options.json_path, json);
   if (out) {
     write_json_file(out->file(kReportName), json);

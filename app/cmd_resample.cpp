@@ -13,6 +13,7 @@
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
 #include "core/run/point_set_resampling.hpp"
+#include "core/run/resampling_report.hpp"
 #include "core/run/shape_opening.hpp"
 #include "core/util/process_memory.hpp"
 #include "core/util/stopwatch.hpp"
@@ -37,12 +38,7 @@ template <int D>
 void resample_and_write(const PointSet<D>& input, std::size_t file_points, const ResampleOptions& options,
                         PointFileFormat format, Stopwatch& clock) {
   const ResampledPointSet<D> result = resample_point_set(input, options.resampling);
-  if (result.points.empty())
-    throw std::runtime_error(
-        "resampling produced no points: the surface has no crossing with the grid near the "
-        "points (is the input too sparse for h = " +
-        std::to_string(result.grid.spacing()) + " and --radius-factor " +
-        std::to_string(options.resampling.radius_factor) + "?)");
+  require_resampled_points(result, options.resampling);
   // The spacing goes into the file, so that reading it back chooses this h again.
   write_point_set(options.output, result.points, format, result.grid.spacing());
   const double seconds = clock.lap();
@@ -70,33 +66,14 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
   std::cout << "coverage: " << c.summary() << "\n";
   std::cout << "time " << seconds << " s, peak memory " << memory << " MiB\n";
   if (!options.json_path.empty()) {
-    nlohmann::json j;
-    j["input"] = options.input;
-    j["output"] = options.output;
-    j["dimension"] = D;
-    j["variant"] = to_string(options.resampling.variant);
-    j["h"] = result.grid.spacing();
-    j["radius_factor"] = options.resampling.radius_factor;
-    j["support"] = {{"widened", options.resampling.widen_support},
-                    {"widened_points", result.widening.widened_points},
-                    {"widest", result.widening.widest}};
-    j["file_points"] = file_points;  // a mesh's vertices
-    j["points_in"] = input.size();   // a mesh's samples
-    j["points_out"] = result.points.size();
-    j["spacing_h"] = {
-        {"min", result.spacing_h.min}, {"median", result.spacing_h.median}, {"max", result.spacing_h.max}};
-    j["coverage"] = {{"reach", kCoverageReach},
-                     {"input_covered", c.input_fraction()},
-                     {"output_on_input", c.output_fraction()},
-                     {"input_uncovered_points", c.input_points - c.input_covered},
-                     {"output_off_points", c.output_points - c.output_on_input},
-                     {"gap_reach", kGapReach},
-                     {"output_in_gaps", c.gap_fraction()},
-                     {"output_gap_points", c.output_in_gaps},
-                     {"clear_loss", c.clear_loss()}};
-    j["rim"] = {{"samples_in", rim.samples_in}, {"samples_out", rim.samples_out}, {"advance_h", rim.advance_h}};
-    j["seconds"] = seconds;
-    j["peak_memory_mib"] = memory;
+    ResamplingRun run;
+    run.input = options.input;
+    run.output = options.output;
+    run.file_points = file_points;
+    run.points_in = input.size();
+    run.seconds = seconds;
+    run.peak_memory_mib = memory;
+    const nlohmann::json j = resampling_report_json(result, options.resampling, run);
     write_json_file(options.json_path, j);
   }
   if (c.clear_loss()) {

@@ -1,13 +1,11 @@
 #pragma once
-// `amls deform`'s report: JSON and a short text summary.
+// `amls deform`'s short text summary (its JSON: core/run/scene_report_json.hpp).
 #include <iosfwd>
-#include <nlohmann/json.hpp>
 
 #include "core/run/scene_run.hpp"
 
 namespace amls::app {
 
-nlohmann::json to_json(const SceneRunReport& report);
 void print_summary(std::ostream& out, const SceneRunReport& report);
 
 }  // namespace amls::app

@@ -200,6 +200,12 @@ TEST_CASE("extract_mesh: a surface through grid vertices leaves no vertices in o
         (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm() / (h * h));
   // The vertices' margin of 1e-3 of an edge from its ends bounds it by about 1e-6.
   CHECK(smallest > 5e-7);
+  // The vertices gathered beside those grid vertices were merged (sliver_collapse.hpp), and the
+  // sphere stayed a sphere.
+  CHECK(out.stats.collapsed_vertices > 0);
+  CHECK(static_cast<long>(mesh.vertices.size()) - static_cast<long>(mesh_topology(mesh).facets) +
+            static_cast<long>(mesh.cells.size()) ==
+        2);
 }
 
 TEST_CASE("extract_mesh: a circle's polyline is closed, counter-clockwise, and as long as the circle") {

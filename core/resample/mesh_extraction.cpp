@@ -5,6 +5,7 @@
 #include <bit>
 #include <numeric>
 
+#include "core/geometry/sliver_collapse.hpp"
 #include "core/resample/segment_root.hpp"
 #include "core/util/flat_hash_map.hpp"
 
@@ -105,6 +106,8 @@ class MeshBuilder {
       for (const KuhnSimplex<D>& simplex : simplices_) mesh_simplex(cube, corners, simplex);
     }
     locate_vertices(variant, pool);
+    // Where F is nearly zero at a grid vertex, the vertices beside it are merged (sliver_collapse.hpp).
+    if constexpr (D == 3) out_.stats.collapsed_vertices = collapse_slivers(out_.mesh, grid);
     return std::move(out_);
   }
 

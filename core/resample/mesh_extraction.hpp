@@ -14,7 +14,10 @@
 // zero of the linear interpolant of the corner values (Variant::interpolated),
 // but at least 1e-3 of the edge from either end (so that a surface through a
 // grid vertex leaves no vertices in one place nor triangles of no area), and
-// carries the fitted gradient's unit normal there.
+// carries the fitted gradient's unit normal there. In 3D, the vertices that
+// a grid vertex where F is nearly zero gathers within 0.05 h are then merged
+// into one (core/geometry/sliver_collapse.hpp), so that the slivers between
+// them do not fold over each other.
 //
 // F at the cube corners comes from Resampler::update_function(), which
 // evaluates it at the vertices around every point; corners outside those are
@@ -35,6 +38,7 @@ struct MeshExtractionStats {
   std::size_t undefined_cubes = 0;    // cubes the surface enters that have a corner where F is undefined
   std::size_t extra_evaluations = 0;  // corners evaluated beyond those of update_function()
   std::size_t root_fallbacks = 0;     // exact roots that met an undefined F and took the interpolant's zero
+  std::size_t collapsed_vertices = 0;  // 3D: vertices merged into a neighbour beside a grid vertex (sliver_collapse.hpp)
 };
 
 template <int D>

@@ -5,7 +5,6 @@
 
 #include "core/geometry/sample_spacing.hpp"
 #include "core/io/point_set_io.hpp"
-#include "core/io/surface_samples.hpp"
 
 namespace amls {
 
@@ -36,12 +35,16 @@ SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& g
 }  // namespace
 
 OpenedShape open_shape_file(const std::string& path, const ShapeOpening& options, ThreadPool& pool) {
+  pool.poll_cancel();
+  if (options.step) options.step("reading the file", 0, kShapeOpeningSteps);
+  return open_shape(read_surface_input(path, options.dimension), options, pool);
+}
+
+OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPool& pool) {
   auto step = [&](const char* name, int index) {
     pool.poll_cancel();
     if (options.step) options.step(name, index, kShapeOpeningSteps);
   };
-  step("reading the file", 0);
-  SurfaceInput input = read_surface_input(path, options.dimension);
   OpenedShape out;
   out.file_points = input.positions().size();
   out.dimension = input.dimension();

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/geometry/point_set.hpp"
+#include "core/io/surface_samples.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/util/thread_pool.hpp"
 
@@ -51,5 +52,9 @@ inline constexpr int kShapeOpeningSteps = 3;
 // estimated; Cancelled when `pool`'s cancel check says stop (before each step,
 // and inside the normal estimation).
 OpenedShape open_shape_file(const std::string& path, const ShapeOpening& options, ThreadPool& pool);
+
+// Steps 2 and 3 for a shape already read (or made in memory, as the Python
+// module's arrays are: `input.path` names it in messages).
+OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPool& pool);
 
 }  // namespace amls

@@ -1,0 +1,116 @@
+#include "python/array_conversion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace amls::python {
+
+namespace {
+
+Array as_array(const py::handle& object, const char* name) {
+  if (object.is_none()) throw std::invalid_argument(std::string(name) + ": expected an array, got None");
+  Array a = Array::ensure(object);  // null, with no Python error left set, when it is not numbers
+  if (!a) throw std::invalid_argument(std::string(name) + ": expected an array of numbers");
+  return a;
+}
+
+}  // namespace
+
+int dimension_of(const py::handle& points, const char* name) {
+  const Array a = as_array(points, name);
+  if (a.ndim() != 2 || (a.shape(1) != 2 && a.shape(1) != 3))
+    throw std::invalid_argument(std::string(name) + ": expected an (n, 2) or (n, 3) array, got shape " +
+                                py::str(py::getattr(points, "shape", py::str("?"))).cast<std::string>());
+  return static_cast<int>(a.shape(1));
+}
+
+template <int D>
+std::vector<Vec<D>> vectors_from(const py::handle& array, const char* name, bool allow_empty) {
+  const Array a = as_array(array, name);
+  if (a.ndim() != 2 || a.shape(1) != D)
+    throw std::invalid_argument(std::string(name) + ": expected an (n, " + std::to_string(D) + ") array, got shape " +
+                                py::str(py::getattr(array, "shape", py::str("?"))).cast<std::string>());
+  const auto n = static_cast<std::size_t>(a.shape(0));
+  if (n == 0 && !allow_empty) throw std::invalid_argument(std::string(name) + ": the array has no rows");
+  std::vector<Vec<D>> out(n);
+  const double* data = a.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < D; ++k) {
+      const double v = data[i * D + static_cast<std::size_t>(k)];
+      if (!std::isfinite(v))
+        throw std::invalid_argument(std::string(name) + ": row " + std::to_string(i) + " has a non-finite value");
+      out[i][k] = v;
+    }
+  }
+  return out;
+}
+
+template <int D>
+PointSet<D> point_set_from(const py::handle& points, const py::handle& normals) {
+  PointSet<D> out;
+  out.positions = vectors_from<D>(points, "points");
+  if (!normals.is_none()) {
+    out.normals = vectors_from<D>(normals, "normals");
+    if (out.normals.size() != out.positions.size())
+      throw std::invalid_argument("normals: " + std::to_string(out.normals.size()) + " rows for " +
+                                  std::to_string(out.positions.size()) + " points");
+  }
+  return out;
+}
+
+template <int D>
+std::vector<Vec<D>> positions_from(const py::handle& x, const char* name, bool& single) {
+  Array a = as_array(x, name);
+  single = a.ndim() == 1;
+  if (!single) return vectors_from<D>(x, name, true);
+  if (a.shape(0) != D)
+    throw std::invalid_argument(std::string(name) + ": expected " + std::to_string(D) + " coordinates, got " +
+                                std::to_string(a.shape(0)));
+  return vectors_from<D>(a.reshape({py::ssize_t{1}, py::ssize_t{D}}), name);
+}
+
+template <int D>
+Array to_array(const std::vector<Vec<D>>& vectors) {
+  Array out({static_cast<py::ssize_t>(vectors.size()), static_cast<py::ssize_t>(D)});
+  double* data = out.mutable_data();
+  for (std::size_t i = 0; i < vectors.size(); ++i)
+    for (int k = 0; k < D; ++k) data[i * D + static_cast<std::size_t>(k)] = vectors[i][k];
+  return out;
+}
+
+Array to_array(const std::vector<double>& values) {
+  Array out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+std::pair<py::object, py::object> points_and_normals(const PointSet<3>& held, int dimension) {
+  if (dimension == 2) {
+    const PointSet<2> p = to_2d(held);
+    return {to_array(p.positions), to_array(p.normals)};
+  }
+  return {to_array(held.positions), to_array(held.normals)};
+}
+
+template <std::size_t K>
+py::array_t<std::int64_t> cells_to_array(const std::vector<std::array<std::uint32_t, K>>& cells) {
+  py::array_t<std::int64_t> out({static_cast<py::ssize_t>(cells.size()), static_cast<py::ssize_t>(K)});
+  std::int64_t* data = out.mutable_data();
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    for (std::size_t k = 0; k < K; ++k) data[i * K + k] = cells[i][k];
+  return out;
+}
+
+template std::vector<Vec<2>> vectors_from<2>(const py::handle&, const char*, bool);
+template std::vector<Vec<3>> vectors_from<3>(const py::handle&, const char*, bool);
+template PointSet<2> point_set_from<2>(const py::handle&, const py::handle&);
+template PointSet<3> point_set_from<3>(const py::handle&, const py::handle&);
+template std::vector<Vec<2>> positions_from<2>(const py::handle&, const char*, bool&);
+template std::vector<Vec<3>> positions_from<3>(const py::handle&, const char*, bool&);
+template Array to_array<2>(const std::vector<Vec<2>>&);
+template Array to_array<3>(const std::vector<Vec<3>>&);
+template py::array_t<std::int64_t> cells_to_array<2>(const std::vector<std::array<std::uint32_t, 2>>&);
+template py::array_t<std::int64_t> cells_to_array<3>(const std::vector<std::array<std::uint32_t, 3>>&);
+
+}  // namespace amls::python

@@ -1,0 +1,91 @@
+// read, write, read_mesh: the core's readers and writers (core/io).
+#include "core/io/mesh_io.hpp"
+#include "core/io/point_set_io.hpp"
+#include "python/array_conversion.hpp"
+#include "python/bindings.hpp"
+#include "python/released_work.hpp"
+
+namespace amls::python {
+
+namespace {
+
+py::object normals_or_none(const PointSet<3>& points, bool has_normals, int dimension) {
+  if (!has_normals) return py::none();
+  return dimension == 2 ? py::object(to_array(to_2d(points).normals)) : py::object(to_array(points.normals));
+}
+
+py::tuple read_file(const std::string& path, int dim) {
+  if (dim != 0 && dim != 2 && dim != 3) throw std::invalid_argument("dim: must be 0 (from the file), 2 or 3");
+  LoadedPointSet loaded;
+  run_released([&] { loaded = read_point_set(path, dim); }, {true, path});
+  warn_all(loaded.warnings);
+  py::object positions = loaded.dimension == 2 ? py::object(to_array(to_2d(loaded.points).positions))
+                                               : py::object(to_array(loaded.points.positions));
+  return py::make_tuple(positions, normals_or_none(loaded.points, loaded.has_normals, loaded.dimension));
+}
+
+template <int D>
+void write_set(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
+  const PointSet<D> set = point_set_from<D>(points, normals);
+  const PointFileFormat format = format_from_extension(path);
+  run_released([&] { write_point_set(path, set, format, spacing); }, {true, ""});
+}
+
+void write_file(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
+  if (dimension_of(points, "points") == 2) {
+    write_set<2>(path, points, normals, spacing);
+  } else {
+    write_set<3>(path, points, normals, spacing);
+  }
+}
+
+py::tuple read_mesh_file(const std::string& path) {
+  TriangleMesh mesh;
+  run_released([&] { mesh = read_mesh(path); }, {true, path});
+  return py::make_tuple(to_array(mesh.vertices), cells_to_array(mesh.triangles));
+}
+
+}  // namespace
+
+void bind_files(py::module_& m) {
+  m.def("read", &read_file, py::arg("path"), py::arg("dim") = 0,
+        R"(read(path, dim=0) -> (points, normals)
+
+Reads a point set, as `amls resample` does: PLY (ASCII, binary little and big endian), OFF, and text
+columns (.xyz, .pwn, .csv, .txt); the extension picks the format. The vertices of a PLY or OFF mesh
+are read as points (read_mesh reads the faces too).
+
+  path   the file
+  dim    2 or 3 forces the dimension; 0 (default): the file's `amls dim` comment, else 2 when every
+         z is 0 (with a warning), else 3
+
+Returns points, a float64 array (n, 3) or (n, 2), and normals of the same shape, or None when the
+file has none. Small defects are repaired with a warning (UserWarning), as on the command line:
+non-finite points dropped, duplicates merged, bad normals re-estimated.
+Raises FileNotFoundError for a missing file, OSError for one that cannot be read or parsed (the
+message names the file and the line or vertex), ValueError for an extension no reader takes.)");
+  m.def("write", &write_file, py::arg("path"), py::arg("points"), py::arg("normals") = py::none(),
+        py::arg("spacing") = 0.0,
+        R"(write(path, points, normals=None, spacing=0.0)
+
+Writes a point set as `amls resample --out` does: `.ply` (binary little endian, doubles) or `.xyz`
+(shortest decimals that read back bit for bit). A 2D set (n, 2) is written with z = 0 and an
+`amls dim 2` comment.
+
+  points    float64 array (n, 3) or (n, 2)
+  normals   the same shape, or None to write none
+  spacing   > 0: the grid spacing h the points were made at, recorded as `amls spacing h` so that
+            reading the file back chooses the same h (resample's report gives it as "h")
+
+The file is written through a temporary file renamed over `path`. Raises ValueError for bad arrays
+(shape, non-finite values, a zero normal among others) or an unknown extension, OSError when the
+file cannot be written.)");
+  m.def("read_mesh", &read_mesh_file, py::arg("path"),
+        R"(read_mesh(path) -> (vertices, faces)
+
+Reads a triangle mesh: OBJ, or PLY or OFF with faces (polygons fan-triangulated). Returns vertices,
+float64 (n, 3), and faces, int64 (m, 3) (0-based indices); a file without faces gives no faces.
+Raises FileNotFoundError for a missing file, OSError for one that cannot be read.)");
+}
+
+}  // namespace amls::python

@@ -1,0 +1,51 @@
+#include "python/shape_input.hpp"
+
+#include "core/io/point_set_io.hpp"
+#include "core/util/parameter_ranges.hpp"
+
+namespace amls::python {
+
+std::string shape_path(const ShapeArguments& shape) {
+  const py::object os_path = py::module_::import("os").attr("PathLike");
+  if (py::isinstance<py::str>(shape.points) || py::isinstance(shape.points, os_path))
+    return py::str(py::module_::import("os").attr("fspath")(shape.points)).cast<std::string>();
+  return "";
+}
+
+SurfaceInput arrays_input(const ShapeArguments& shape) {
+  SurfaceInput input;
+  input.path = "points";
+  LoadedPointSet& loaded = input.point_set;
+  loaded.dimension = dimension_of(shape.points, "points");
+  loaded.has_normals = !shape.normals.is_none();
+  loaded.points = loaded.dimension == 2 ? to_3d(point_set_from<2>(shape.points, shape.normals))
+                                        : point_set_from<3>(shape.points, shape.normals);
+  // Without normals the set holds zero ones, as a file without normals reads.
+  if (!loaded.has_normals) loaded.points.normals.assign(loaded.points.size(), Vec<3>::Zero());
+  return input;
+}
+
+PointSetResampling resampling_options(const py::object& spacing, const py::object& grid, double radius_factor,
+                                      const std::string& variant, bool uniform_support, int threads) {
+  PointSetResampling r;
+  if (!spacing.is_none() && !grid.is_none()) throw std::invalid_argument("spacing and grid: give one, not both");
+  if (!spacing.is_none()) {
+    r.spacing = spacing.cast<double>();
+    check_range("spacing", r.spacing, ranges::kSpacing);
+  }
+  if (!grid.is_none()) {
+    const double cells = grid.cast<double>();
+    check_range("grid", cells, ranges::kGridCells);
+    r.grid = static_cast<int>(cells);
+    if (r.grid != cells) throw std::invalid_argument("grid: must be a whole number of cells, got " + format_number(cells));
+  }
+  check_range("radius_factor", radius_factor, ranges::kRadiusFactor);
+  check_range("threads", threads, ranges::kThreads);
+  r.radius_factor = radius_factor;
+  r.variant = parse_variant(variant);
+  r.widen_support = !uniform_support;
+  r.threads = threads;
+  return r;
+}
+
+}  // namespace amls::python

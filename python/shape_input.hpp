@@ -1,0 +1,30 @@
+#pragma once
+// A shape given to the module - a file path or arrays - opened as the command
+// line opens a file (core/run/shape_opening.hpp): h chosen, missing normals
+// estimated, the cost limits checked.
+#include <string>
+
+#include "core/run/shape_opening.hpp"
+#include "python/array_conversion.hpp"
+
+namespace amls::python {
+
+struct ShapeArguments {
+  py::object points;  // a path (str or os.PathLike), or an (n, D) array
+  py::object normals;  // None or (n, D)
+  int dim = 0;         // files only: 0 from the file, 2 or 3 forces it
+};
+
+// The file path, or "" for arrays.
+std::string shape_path(const ShapeArguments& shape);
+
+// Checks the arrays (with the GIL held) and returns the shape as a file's
+// contents would be, named "points" in messages.
+SurfaceInput arrays_input(const ShapeArguments& shape);
+
+// Checks the resampling options' ranges, naming the Python arguments:
+// spacing and grid (None: 0), radius_factor, threads.
+PointSetResampling resampling_options(const py::object& spacing, const py::object& grid, double radius_factor,
+                                      const std::string& variant, bool uniform_support, int threads);
+
+}  // namespace amls::python

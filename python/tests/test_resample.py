@@ -1,0 +1,95 @@
+"""resample: the command line's defaults, checks and report; the kitten scan to the same bytes."""
+import json
+import os
+
+import numpy as np
+import pytest
+
+from conftest import CLI, cgal_file, circle, run_cli, sphere
+
+
+def test_the_kitten_scan_resamples_to_the_command_lines_bytes(amls, tmp_path):
+    kitten = cgal_file("points_3/kitten.xyz")
+    cli_out, cli_report = tmp_path / "cli.ply", tmp_path / "cli.json"
+    run_cli("resample", kitten, "--out", cli_out, "--json", cli_report)
+    points, normals = amls.read(kitten)
+    assert points.shape == (5210, 3) and normals.shape == (5210, 3)
+    new_points, new_normals, report = amls.resample(points, normals)
+    amls.write(str(tmp_path / "py.ply"), new_points, new_normals, spacing=report["h"])
+    assert (tmp_path / "py.ply").read_bytes() == cli_out.read_bytes()
+    # The same from the path, and the same report keys and counts as --json.
+    from_path = amls.resample(kitten)
+    assert np.array_equal(from_path[0], new_points) and np.array_equal(from_path[1], new_normals)
+    cli = json.loads(cli_report.read_text())
+    assert set(report) == set(cli)
+    for key in ("h", "points_in", "points_out", "file_points", "spacing_h", "coverage", "rim", "support"):
+        assert report[key] == cli[key], key
+    assert from_path[2]["input"] == kitten and report["input"] == "" and report["output"] == ""
+
+
+def test_results_do_not_depend_on_threads(amls):
+    points, normals = sphere(3000)
+    one = amls.resample(points, normals, grid=64, threads=1)
+    two = amls.resample(points, normals, grid=64, threads=2)
+    assert np.array_equal(one[0], two[0]) and np.array_equal(one[1], two[1])
+    mesh_one = amls.mesh(one[0], one[1], spacing=1 / 64, threads=1)
+    mesh_two = amls.mesh(one[0], one[1], spacing=1 / 64, threads=3)
+    assert all(np.array_equal(a, b) for a, b in zip(mesh_one, mesh_two))
+
+
+def test_a_curve_resamples_in_2d_and_meshes_to_a_closed_polyline(amls):
+    points, normals = circle(400)
+    new_points, new_normals, report = amls.resample(points, normals, grid=128)
+    assert new_points.shape[1] == 2 and report["dimension"] == 2
+    assert np.allclose(np.linalg.norm(new_points - 0.5, axis=1), 0.3, atol=0.01 / 128)
+    vertices, segments = amls.mesh(new_points, new_normals, spacing=1 / 128)
+    assert segments.shape[1] == 2 and len(segments) == len(vertices)  # closed: one segment per vertex
+
+
+def test_normals_are_estimated_when_missing(amls):
+    points, normals = sphere(4000)
+    new_points, new_normals, report = amls.resample(points, grid=64)
+    radial = (new_points - 0.5) / np.linalg.norm(new_points - 0.5, axis=1)[:, None]
+    assert np.min(np.sum(radial * new_normals, axis=1)) > 0.9  # oriented outwards, as given ones would be
+
+
+@pytest.mark.parametrize(
+    "arguments, error, message",
+    [
+        ({"spacing": 0.0}, ValueError, r"spacing: must be within \[1e-09, 1e\+09\] \(grid spacing h\), got 0"),
+        ({"spacing": float("nan")}, ValueError, "spacing: must be within"),
+        ({"grid": 0}, ValueError, r"grid: must be within \[1, 65536\]"),
+        ({"grid": 10, "spacing": 0.1}, ValueError, "not both"),
+        ({"radius_factor": 1.0}, ValueError, r"radius_factor: must be within \[1.5, 32\]"),
+        ({"threads": 0}, ValueError, r"threads: must be within \[1, 256\]"),
+        ({"variant": "fast"}, ValueError, "exact"),
+        ({"spacing": 1e-6}, RuntimeError, "50 million|spacing"),
+        ({"mesh": "m.stl"}, ValueError, "m.stl"),
+    ],
+)
+def test_out_of_range_arguments_raise_with_the_command_lines_messages(amls, arguments, error, message):
+    points, normals = sphere(500)
+    with pytest.raises(error, match=message):
+        amls.resample(points, normals, **arguments)
+
+
+def test_a_clear_loss_raises_unless_accepted(amls):
+    # A sphere dense above its equator and 20 times sparser below, resampled with one support Delta
+    # for all: holes open in the sparse half, and the coverage check says so.
+    points, normals = sphere(20000)
+    keep = (points[:, 2] > 0.5) | (np.arange(len(points)) % 20 == 0)
+    arguments = dict(grid=128, uniform_support=True)
+    with pytest.raises(RuntimeError, match=r"points: the output misses part of the input: .*accept_loss=True"):
+        amls.resample(points[keep], normals[keep], **arguments)
+    with pytest.warns(UserWarning, match="accepted"):
+        _, _, report = amls.resample(points[keep], normals[keep], accept_loss=True, **arguments)
+    assert report["coverage"]["clear_loss"] is True
+    # Widened supports (the default) close the sparse half.
+    assert amls.resample(points[keep], normals[keep], grid=128)[2]["coverage"]["clear_loss"] is False
+
+
+def test_help_reads_like_the_command_lines(amls):
+    text = amls.resample.__doc__
+    for phrase in ("the median distance from a point", "50 million", "radius_factor", "accept_loss", "threads"):
+        assert phrase in text
+    assert os.path.exists(os.path.join(os.path.dirname(amls.__file__), "amls.pyi"))
