@@ -15,7 +15,10 @@
 // are from the sphere so moved, all of them and those more than 3 h inside
 // its rim (the MLS support of a point nearer the rim reaches the bent neck).
 //
-//   amls_region_bench [h] [threads]     (defaults 0.05 and 1)
+//   amls_region_bench [h] [threads] [always|local|both] [quick]
+//
+// Defaults 0.05, 1 and both; `quick` runs only the regions and the point
+// handles (the comparison of their costs) and skips the turned cap.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -117,6 +120,12 @@ Outcome run(const Scene<3>& scene, ResamplePolicy::Kind policy, int threads, con
 int main(int argc, char** argv) {
   const double h = argc > 1 ? std::atof(argv[1]) : 0.05;
   const int threads = argc > 2 ? std::atoi(argv[2]) : 1;
+  const std::string only = argc > 3 ? argv[3] : "both";
+  const bool quick = argc > 4 && std::string(argv[4]) == "quick";
+  if ((only != "both" && only != "always" && only != "local") || (argc > 4 && !quick) || !(h > 0.0) || threads < 1) {
+    std::fprintf(stderr, "usage: amls_region_bench [h > 0] [threads >= 1] [always|local|both] [quick]\n");
+    return 2;
+  }
   constexpr std::size_t kSteps = 40;
   const Vec<3> lift(0.0, 0.0, 0.4);
   const auto south = cap(h, -1.0), north = cap(h, 1.0);
@@ -128,6 +137,7 @@ int main(int argc, char** argv) {
   std::printf("%-8s %-7s %12s %12s %12s\n", "policy", "handles", "pinned (h)", "moving (h)", "deform ms");
   for (const ResamplePolicy::Kind policy : {ResamplePolicy::Kind::always, ResamplePolicy::Kind::local}) {
     const char* policy_name = policy == ResamplePolicy::Kind::always ? "always" : "local";
+    if (only != "both" && only != policy_name) continue;
     auto report = [&](const std::string& name, const Scene<3>& scene) {
       const Outcome o = run(scene, policy, threads, *south, *north, lift, h);
       std::printf("%-8s %-7s %12.4f %12.4f %12.3f\n", policy_name, name.c_str(), o.pinned_h, o.moving_h, o.deform_ms);
@@ -139,6 +149,7 @@ int main(int argc, char** argv) {
     regions.history.add_target({}, kSteps, {RegionMotion<3>{}, moved});
     report("region", regions);
     for (const std::size_t k : {16, 32, 64}) {
+      if (quick) break;
       Scene<3> fps = base;
       std::vector<Vec<3>> from = farthest_point_samples(*south, k), to = from;
       for (const Vec<3>& p : farthest_point_samples(*north, k)) {
@@ -154,6 +165,6 @@ int main(int argc, char** argv) {
     points.history.add_target({Vec<3>(0, 0, -1), Vec<3>(0, 0, 1) + lift}, kSteps);
     report("points", points);
   }
-  turned_cap(h, threads);
+  if (!quick) turned_cap(h, threads);
   return 0;
 }

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Drives the real amls-editor in an X server (Xvfb) with real input (xdotool).
 
-    python3 tests/editor_gui_test.py build/app/editor/amls-editor
+    python3 tests/editor_gui_test.py build/app/editor/amls-editor [build/app/amls] [--only=regions ...]
+
+With the amls binary, the region test also replays the editor's saved scene with `amls deform`;
+--only= runs the named checks alone (2d, open_without_normals, regions, frames_during_heavy_step).
 
 The test starts its own Xvfb (1280x800x24) on a display number Xvfb picks
 itself (-displayfd: no race with other X servers on the machine, which
@@ -13,9 +16,11 @@ the scene's first stage, Shift+click on the curve adds another,
 a drag deforms the surface the way it says (Ctrl+S exports the result), the
 interpolated variant (key I) changes the next export, F12 writes a screenshot
 whose pixels show the surface and the handles; Esc and undo restore the
-point set; on a 3D sphere, an Alt+drag lasso makes a region, a second one
-pinned (key P) stays put while the first is dragged by its marker (the export
-shows the first moved rigidly and the second where it was); on a heavy 3D
+point set; on a 3D sphere opened from a scene with a pinned region, the
+editor shows that region, an Alt+drag lasso makes another, a brush stroke (B)
+a third that undo takes away; the lasso's region dragged by its marker and
+turned with Ctrl+drag moves rigidly in the export while the pinned one stays,
+and `amls deform` of the saved scene gives the export; on a heavy 3D
 scene, frames keep coming while the worker resamples.
 The editor's debug log (--debug-log) says when it is ready and where the view
 is. Exits 77 (skipped) without a display or xdotool.
@@ -363,51 +368,143 @@ def regions_line(editor, pattern):
     return editor.wait_line(r"regions " + pattern, what="regions " + pattern)
 
 
-def test_regions(binary, folder):
-    # A handle at the back pole, which the drags leave in place.
+def last_regions(editor):
+    """The fields of each region in the newest `regions` line of the log."""
+    line = [l for l in editor.lines() if "regions count=" in l][-1]
+    out = []
+    for part in line.split(" | ")[1:]:
+        fields = dict(re.findall(r"(\w+)=(\S+)", part))
+        out.append({key: [float(v) for v in fields[key].split(",")] for key in
+                    ("marker", "translation", "rotation", "pivot")} | {"members": int(fields["members"]),
+                                                                     "pinned": fields["pinned"] == "1"})
+    return out
+
+
+def rotated(vector, rotation):
+    """The vector turned by a rotation vector (Rodrigues)."""
+    angle = math.sqrt(sum(c * c for c in rotation))
+    if angle == 0:
+        return list(vector)
+    k = [c / angle for c in rotation]
+    cross = [k[1] * vector[2] - k[2] * vector[1], k[2] * vector[0] - k[0] * vector[2], k[0] * vector[1] - k[1] * vector[0]]
+    dot = sum(a * b for a, b in zip(k, vector))
+    c, s = math.cos(angle), math.sin(angle)
+    return [vector[i] * c + cross[i] * s + k[i] * dot * (1 - c) for i in range(3)]
+
+
+def at_rest(p, region):
+    """Where a point the region's motion moved was before it: c + R^T (p - c - t)."""
+    c, t, r = region["pivot"], region["translation"], region["rotation"]
+    back = rotated([p[i] - c[i] - t[i] for i in range(3)], [-v for v in r])
+    return [c[i] + back[i] for i in range(3)]
+
+
+def pinned_cap_points():
+    """Members of a region about (0, -0.75) on the front of the unit sphere, 0.03 apart (finer than h)."""
+    out = []
+    for i in range(-6, 7):
+        for j in range(-6, 7):
+            x, y = 0.03 * i, -0.75 + 0.03 * j
+            if math.hypot(x, y + 0.75) <= 0.18:
+                out.append("[%.6f, %.6f, %.6f]" % (x, y, math.sqrt(1 - x * x - y * y)))
+    return ", ".join(out)
+
+
+def test_regions(binary, folder, amls):
+    # A handle at the back pole, which the drags leave in place, and a pinned region from the scene below the
+    # front pole: the editor opens the scene with both.
     scene = write_scene(folder, "sphere_regions.json",
                         '{"dimension": 3, "name": "sphere", "shape": {"type": "sphere", "radius": 1, "points": 3000},'
-                        ' "grid": {"spacing": 0.08}, "stages": [{"handles": [[0, 0, -1]],'
-                        ' "targets": [{"steps": 1, "handles": [[0, 0, -1]]}]}]}')
-    out = os.path.join(folder, "regions.ply")
-    editor = Editor(binary, folder, "regions", [scene, "--export", out])
+                        ' "grid": {"spacing": 0.08}, "regions": [{"points": [%s]}],'
+                        ' "stages": [{"handles": [[0, 0, -1]], "regions": [{"region": 0, "pinned": true}],'
+                        ' "targets": [{"steps": 1, "handles": [[0, 0, -1]], "regions": [{}]}]}]}' % pinned_cap_points())
+    out, saved = os.path.join(folder, "regions.ply"), os.path.join(folder, "regions-session.json")
+    editor = Editor(binary, folder, "regions", [scene, "--export", out, "--scene-out", saved])
     editor.wait_line(r"snapshot .* load=1 dimension=3", what="the sphere to load")
     editor.wait_idle()
     h = 0.08
+    regions_line(editor, r"count=1 active=-1 \| members=\d+ pinned=1 ")
+    check(True, "the editor opened the scene's pinned region")
 
-    # A lasso about the front pole: a moving region; one below it, pinned with P.
+    # A lasso about the front pole: a moving region.
     lasso(editor, circle_on_sphere(editor, 0.0, 0.0, 0.45))
-    regions_line(editor, r"count=1 active=0 \| members=\d+ pinned=0")
-    lasso(editor, circle_on_sphere(editor, 0.0, -0.75, 0.18))
     regions_line(editor, r"count=2 active=1 .*\| members=\d+ pinned=0 ")
     editor.wait_idle()
-    editor.key("p")
-    line = regions_line(editor, r"count=2 active=1 .*\| members=\d+ pinned=1 ")
-    members = [int(m) for m in re.findall(r"members=(\d+)", line)]
-    check(members[0] > 50 and members[1] > 10, "two lassos made two regions (%s members)" % members)
 
-    # Drag the first region's marker to the right.
-    marker = [float(v) for v in re.findall(r"marker=(\S+),(\S+) ", line)[0]]
+    # The brush (B) paints a third region above the lasso's; undo takes it away again.
+    editor.key("b")
+    stroke = [orbit_to_window(editor, (x, y, math.sqrt(1 - x * x - y * y))) for x, y in ((-0.25, 0.6), (-0.05, 0.7))]
+    drag(editor, stroke[0], stroke[1], steps=6)
+    line = regions_line(editor, r"count=3 active=2 ")
+    brushed = last_regions(editor)[2]["members"]
+    check(brushed > 10, "a brush stroke made a region (%d members)" % brushed)
+    editor.key("b")
+    editor.wait_idle()
+    editor.key("ctrl+z")
+    regions_line(editor, r"count=2 active=-1 ")
+    check(True, "undo took the brushed region away")
+    members = [r["members"] for r in last_regions(editor)]
+    check(members[0] > 10 and members[1] > 50, "the scene's region and the lasso's (%s members)" % members)
+
+    # Drag the lasso's region by its marker to the right, then turn it with Ctrl about the view axis.
+    marker = last_regions(editor)[1]["marker"]
     start = (round(marker[0]), round(marker[1]))
     drag(editor, start, (start[0] + 80, start[1]))
     editor.wait_idle()
-    line = [l for l in editor.lines() if "regions count=2" in l][-1]
-    translation = [float(v) for v in re.findall(r"translation=(\S+),(\S+),(\S+)", line)[0]]
-    check(translation[0] > 0.1 and abs(translation[1]) < 0.02, "the marker's drag moved the region (%s)" % translation)
+    moved = last_regions(editor)[1]
+    check(moved["translation"][0] > 0.1 and abs(moved["translation"][1]) < 0.02,
+          "the marker's drag moved the region (%s)" % moved["translation"])
+    marker = moved["marker"]
+    radius = 9  # within the marker's pick radius, so that the press grabs it
+    arc = [(round(marker[0] + radius * math.cos(a)), round(marker[1] - radius * math.sin(a)))
+           for a in (k * math.pi / 4 / 6 for k in range(7))]
+    editor.move(*arc[0])
+    time.sleep(0.2)
+    xdotool("keydown", "ctrl")
+    time.sleep(0.1)
+    xdotool("mousedown", 1)
+    for p in arc[1:]:
+        time.sleep(0.04)
+        editor.move(*p)
+    time.sleep(0.2)
+    xdotool("mouseup", 1)
+    time.sleep(0.1)
+    xdotool("keyup", "ctrl")
+    editor.wait_idle()
+    region = last_regions(editor)[1]
+    turn = region["rotation"]
+    check(0.3 < turn[2] < 1.2 and abs(turn[0]) < 1e-6 and abs(turn[1]) < 1e-6,
+          "Ctrl+drag about the marker turned the region about the view axis (%s rad)" % turn)
     points = export(editor, out, 0, 3)
 
     # The moved cap lies on the sphere moved with it, the pinned one on the sphere itself: within 0.05 h
-    # where the points' fits (3 h around them) do not reach past the lasso's rim.
-    t = translation
-    moved = [p for p in points if math.hypot(p[0] - t[0], p[1] - t[1]) < 0.2 and p[2] > 0.5]
-    pinned = [p for p in points if math.hypot(p[0], p[1] + 0.75) < 0.08 and p[2] > 0.0]
-    off_moved = max(abs(math.dist(p[:3], t) - 1.0) for p in moved)
+    # where the points' fits (3 h around them) do not reach past the regions' rims.
+    inside = [p for p in points if math.hypot(*at_rest(p, region)[:2]) < 0.2 and at_rest(p, region)[2] > 0.5]
+    pinned = [p for p in points if math.hypot(p[0], p[1] + 0.75) < 0.12 and p[2] > 0.0]
+    off_moved = max(abs(math.hypot(*at_rest(p, region)) - 1.0) for p in inside)
     off_pinned = max(abs(math.hypot(*p[:3]) - 1.0) for p in pinned)
-    check(len(moved) > 10 and off_moved < 0.05 * h,
-          "the points inside the dragged region moved with it (%d, %.5f h off)" % (len(moved), off_moved / h))
+    check(len(inside) > 10 and off_moved < 0.05 * h,
+          "the points inside the dragged region moved with it (%d, %.5f h off)" % (len(inside), off_moved / h))
     check(len(pinned) > 3 and off_pinned < 0.05 * h,
           "the points of the pinned region stayed (%d, %.5f h off)" % (len(pinned), off_pinned / h))
+    # Closed between them: every exported point within 0.3 h of the sphere or of the moved sphere's cap
+    # region, and no gap wider than 2 h anywhere (each point's nearest neighbour within 2 h).
+    spread = max(min(math.dist(p, q) for q in points if q is not p) for p in points[::25])
+    check(spread < 2 * h, "the surface stays closed (farthest nearest neighbour %.2f h)" % (spread / h))
+
+    # Save Scene, then `amls deform` of the saved scene: its last frame is the export.
+    editor.key("ctrl+shift+s")
+    editor.wait_line("message level=info Saved the scene", what="the saved scene")
     editor.quit()
+    if amls:
+        replay = os.path.join(folder, "replay")
+        subprocess.run([amls, "deform", saved, "--out-dir", replay, "--tracers", "1", "--threads", "1"], check=True,
+                       capture_output=True)
+        frames = sorted(f for f in os.listdir(replay) if f.startswith("frame_"))
+        replayed = read_ply(os.path.join(replay, frames[-1]), 3)
+        worst = max((math.dist(a, b) for a, b in zip(points, replayed)), default=math.inf)
+        check(len(replayed) == len(points) and worst < 1e-9,
+              "amls deform of the saved scene gives the export (%d points, %.2g apart)" % (len(replayed), worst))
 
 
 def test_frames_during_heavy_step(binary, folder):
@@ -511,10 +608,13 @@ def start_xvfb(log_path):
 
 def main():
     global XVFB
-    if len(sys.argv) != 2:
+    arguments = [a for a in sys.argv[1:] if not a.startswith("--")]
+    only = [a[len("--only="):] for a in sys.argv[1:] if a.startswith("--only=")]
+    if len(arguments) not in (1, 2):
         print(__doc__)
         return 2
-    binary = os.path.abspath(sys.argv[1])
+    binary = os.path.abspath(arguments[0])
+    amls = os.path.abspath(arguments[1]) if len(arguments) == 2 else None
     if not shutil.which("xdotool") or not (shutil.which("Xvfb") or os.environ.get("DISPLAY")):
         print("skipped: needs xdotool and Xvfb (or an X display)")
         return 77
@@ -525,10 +625,12 @@ def main():
         if shutil.which("Xvfb"):
             XVFB = start_xvfb(os.path.join(folder, "xvfb.log"))
         begin = time.monotonic()
-        test_2d(binary, folder)
-        test_open_without_normals(binary, folder)
-        test_regions(binary, folder)
-        test_frames_during_heavy_step(binary, folder)
+        tests = {"2d": lambda: test_2d(binary, folder),
+                 "open_without_normals": lambda: test_open_without_normals(binary, folder),
+                 "regions": lambda: test_regions(binary, folder, amls),
+                 "frames_during_heavy_step": lambda: test_frames_during_heavy_step(binary, folder)}
+        for name in only or tests:
+            tests[name]()
         print("all GUI checks passed in %.1f s" % (time.monotonic() - begin))
     finally:
         if XVFB:

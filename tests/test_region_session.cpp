@@ -4,7 +4,9 @@
 
 #include "app/editor/edit_session.hpp"
 #include "app/editor/initial_shape.hpp"
+#include "app/editor/scene_start.hpp"
 #include "editor_test_support.hpp"
+#include "region_fixtures.hpp"
 
 using namespace amls;
 using namespace amls::editor;
@@ -127,4 +129,32 @@ TEST_CASE("region session: a session with regions and point handles replays exac
     CHECK(replayed.positions == session.points().positions);
     CHECK(replayed.normals == session.points().normals);
   }
+}
+
+TEST_CASE("region session: a scene's regions start the session, and its saved scene replays with them") {
+  // The scene's north cap starts lifted and turned: the session takes its start motion as it is.
+  Scene<3> scene = test::sphere_with_caps(0.08, lifted_and_turned(2), 1);
+  scene.history.stages[0].regions[1].motion = lifted_and_turned(1);
+  const InitialShape shape = start_from_scene(scene, 1);
+  EditSession<3> session(shape, 1);
+  // The same regions: members, reach, motions and pins.
+  CHECK(session.regions() == scene.history.stages[0].regions);
+  drag_north(session, {lifted_and_turned(2), lifted_and_turned(3)});
+  REQUIRE(session.recording().exact());
+  const DeformationHistory<3> saved = session.recording().history();
+  REQUIRE(saved.stages.size() == 1);
+  CHECK(saved.stages[0].regions == scene.history.stages[0].regions);
+  const PointSet<3> replayed = amls::test::replay_with_amls_deform(session.recording());
+  CHECK(replayed.positions == session.points().positions);
+  CHECK(replayed.normals == session.points().normals);
+  // Reset goes back to the scene's regions where the scene put them.
+  session.reset();
+  CHECK(session.regions() == scene.history.stages[0].regions);
+}
+
+TEST_CASE("region session: start regions of another dimension are refused") {
+  InitialShape shape = make_sphere(1.0, 500, 0.2);
+  const auto flat = std::make_shared<const PointRegion<2>>(std::vector<Vec<2>>{Vec<2>(1.0, 0.0)}, 0.2);
+  shape.regions = std::vector<RegionHandle<2>>{{flat, {}, false}};
+  CHECK_THROWS_AS(EditSession<3>(shape, 1), std::invalid_argument);
 }

@@ -22,6 +22,14 @@ const SceneShape<D>& source_of(const InitialShape& shape) {
                               "D session");
 }
 
+// The shape's start regions, checked: a session moves only regions of its own dimension.
+template <int D>
+std::vector<RegionHandle<D>> regions_of(const InitialShape& shape) {
+  if (const auto* regions = std::get_if<std::vector<RegionHandle<D>>>(&shape.regions)) return *regions;
+  if (std::visit([](const auto& other) { return other.empty(); }, shape.regions)) return {};
+  throw std::invalid_argument("regions of another dimension in a " + std::to_string(D) + "D session");
+}
+
 void add_stats(EditResult& result, const StepStats& stats) {
   if (!result.has_stats) {
     result.stats = stats;
@@ -72,7 +80,7 @@ class Phases {
 template <int D>
 EditSession<D>::EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes)
     : threads_(threads),
-      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), {}, shape.settings, {}, false,
+      initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), regions_of<D>(shape), shape.settings, {}, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),
       recording_(initial_.recording),

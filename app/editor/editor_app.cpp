@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <ctime>
 #include <sstream>
+#include <string_view>
 #include <thread>
 
 #include "core/io/point_set_io.hpp"
@@ -118,6 +119,7 @@ void EditorApp::frame() {
   draw_status_bar(ui_, snapshot, status, view_);
   draw_help(ui_);
   if (snapshot.dimension > 0) {
+    regions_.set_spacing(snapshot.settings.spacing);
     draw_region_window(regions_, snapshot.settings.spacing);
     draw_region_overlay(regions_, view_.camera(), window_.viewport(), window_.pixels_per_unit());
   }
@@ -242,19 +244,18 @@ void EditorApp::process_input() {
     // so that a drag ends wherever the button is let go.
     const bool starts = (event.type == InputEvent::Type::button && event.action == GLFW_PRESS) ||
                         event.type == InputEvent::Type::scroll;
-    if (starts && io.WantCaptureMouse) continue;
-    // Logged before the region tool or the view takes it, so that a test can tell that every button it
-    // let go has been read.
+    const char* taker = "view";
+    if (starts && io.WantCaptureMouse)
+      taker = "ui";
+    else if (!view_.dragging() && regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
+      taker = "regions";
     if (event.type == InputEvent::Type::button)
       log_.line([&] {
         return "button " + std::to_string(event.code) + " action=" + std::to_string(event.action) +
                " mods=" + std::to_string(event.mods) + " at " + std::to_string(event.position.x) + "," +
-               std::to_string(event.position.y);
+               std::to_string(event.position.y) + " to " + taker;
       });
-    if (!view_.dragging() &&
-        regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
-      continue;
-    view_.on_event(event, viewport, scale);
+    if (taker == std::string_view("view")) view_.on_event(event, viewport, scale);
   }
   view_.update(viewport, io.KeyShift, io.WantCaptureMouse);
   regions_.update();
@@ -325,6 +326,13 @@ void EditorApp::on_key(const InputEvent& event) {
         ui_.show_help = false;
       else if (!regions_.cancel())
         view_.cancel();
+      break;
+    case GLFW_KEY_B:
+      if (!ctrl) regions_.brush_mode = !regions_.brush_mode;
+      break;
+    case GLFW_KEY_LEFT_BRACKET:
+    case GLFW_KEY_RIGHT_BRACKET:
+      if (!ctrl) regions_.scale_brush(event.code == GLFW_KEY_RIGHT_BRACKET ? 1.25f : 0.8f);
       break;
     case GLFW_KEY_P:
       if (!ctrl && regions_.active() && *regions_.active() < regions_.regions().size())
@@ -407,7 +415,9 @@ void EditorApp::log_regions() {
         window_.viewport());
     line << " | members=" << r.members.size() << " pinned=" << r.pinned << " marker=" << w.x / ppu.x << ","
          << w.y / ppu.y << " translation=" << r.motion.translation.x() << "," << r.motion.translation.y() << ","
-         << r.motion.translation.z();
+         << r.motion.translation.z() << " rotation=" << r.motion.rotation.x() << "," << r.motion.rotation.y() << ","
+         << r.motion.rotation.z() << " scale=" << r.motion.scale << " pivot=" << r.rest_centre.x() << ","
+         << r.rest_centre.y() << "," << r.rest_centre.z();
   }
   if (line.str() == last_regions_) return;
   last_regions_ = line.str();

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace amls::editor {
 
@@ -54,6 +55,28 @@ void draw_region_overlay(const RegionTool& tool, const Camera& camera, const Vie
       draw->AddCircleFilled(c, 3.0f, marker);
     }
   }
+  // The brush stroke's points, in the selection's own colour, and the brush's sphere where it would paint.
+  const ImU32 selecting = IM_COL32(120, 255, 200, 220);
+  if (const std::optional<BrushStroke>& stroke = tool.stroke()) {
+    const std::span<const std::size_t> painted = stroke->painted();
+    const std::size_t stride = std::max<std::size_t>(1, painted.size() / kMostDotsDrawn);
+    for (std::size_t k = 0; k < painted.size(); k += stride) {
+      const glm::vec3 x = stroke->points().positions[painted[k]];
+      bool visible = false;
+      const ImVec2 p = to_screen(Vec<3>(x.x, x.y, x.z), visible);
+      if (visible) draw->AddRectFilled(ImVec2(p.x - dot, p.y - dot), ImVec2(p.x + dot, p.y + dot), selecting);
+    }
+  }
+  if (const std::optional<glm::vec3> at = tool.brush_hover()) {
+    // The sphere's outline: its radius along the screen's right.
+    const glm::mat4 view = camera.view();
+    const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
+    const glm::vec3 edge = *at + static_cast<float>(tool.brush_radius()) * right;
+    bool visible = false, edge_visible = false;
+    const ImVec2 c = to_screen(Vec<3>(at->x, at->y, at->z), visible);
+    const ImVec2 e = to_screen(Vec<3>(edge.x, edge.y, edge.z), edge_visible);
+    if (visible) draw->AddCircle(c, std::hypot(e.x - c.x, e.y - c.y), selecting, 48, 1.5f);
+  }
   const std::span<const glm::vec2> lasso = tool.lasso();
   if (lasso.size() >= 2) {
     std::vector<ImVec2> corners;
@@ -73,6 +96,13 @@ void draw_region_window(RegionTool& tool, double reach) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::Checkbox("Lasso (or Alt+drag)", &tool.lasso_mode);
+  ImGui::SameLine();
+  ImGui::Checkbox("Brush (B)", &tool.brush_mode);
+  if (tool.brush_mode) {
+    ImGui::SetNextItemWidth(8.0f * ImGui::GetFontSize());
+    ImGui::SliderFloat("radius / h ([ ])", &tool.brush_radius_h, kBrushRadiusH.first, kBrushRadiusH.second, "%.1f",
+                       ImGuiSliderFlags_Logarithmic);
+  }
   int edit = static_cast<int>(tool.edit);
   ImGui::RadioButton("new", &edit, 0);
   ImGui::SameLine();
@@ -91,7 +121,7 @@ void draw_region_window(RegionTool& tool, double reach) {
     ImGui::SameLine();
     if (ImGui::Button("invert")) tool.invert_active(reach);
     ImGui::SameLine();
-    if (ImGui::Button("remove")) tool.remove_active();
+    if (ImGui::Button("clear")) tool.remove_active();
   }
   ImGui::End();
 }

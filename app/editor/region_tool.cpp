@@ -58,6 +58,8 @@ void RegionTool::sync(const std::vector<RegionView>& regions) {
 
 void RegionTool::start() {
   lasso_.clear();
+  stroke_.reset();
+  hover_.reset();
   drag_.reset();
   active_.reset();
   move_pending_ = false;
@@ -71,16 +73,25 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
       if (glm::distance(lasso_.back(), pixel) >= kLassoStepPx) lasso_.push_back(pixel);
       return true;
     }
+    if (stroke_) {
+      stroke_->paint(camera, viewport, pixel, pick_radius_px_);
+      return true;
+    }
     if (drag_) {
       drag_to(pixel, camera, viewport);
       return true;
     }
+    if (brush_mode) hover(pixel, camera, viewport);  // the view may orbit on too
     return false;
   }
   if (event.type != InputEvent::Type::button || event.code != GLFW_MOUSE_BUTTON_LEFT) return false;
   if (event.action == GLFW_RELEASE) {
     if (!lasso_.empty()) {
       finish_lasso(camera, viewport);
+      return true;
+    }
+    if (stroke_) {
+      finish_stroke();
       return true;
     }
     if (drag_) {
@@ -91,6 +102,12 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
     return false;
   }
   if (event.action != GLFW_PRESS || busy()) return false;
+  if (brush_mode && !(event.mods & GLFW_MOD_ALT)) {
+    if (!points_ || points_->size() == 0 || !(brush_radius() > 0.0)) return false;
+    stroke_.emplace(points_, static_cast<float>(brush_radius()));
+    stroke_->paint(camera, viewport, pixel, pick_radius_px_);
+    return true;
+  }
   if ((event.mods & GLFW_MOD_ALT) || lasso_mode) {
     if (!points_) return false;
     lasso_.push_back(pixel);
@@ -160,8 +177,9 @@ void RegionTool::update() {
 }
 
 bool RegionTool::cancel() {
-  if (!lasso_.empty()) {
+  if (!lasso_.empty() || stroke_) {
     lasso_.clear();
+    stroke_.reset();
     return true;
   }
   if (!drag_) return false;
@@ -185,8 +203,21 @@ void RegionTool::finish_lasso(const Camera& camera, const Viewport& viewport) {
   std::vector<glm::vec2> polygon = std::move(lasso_);
   lasso_.clear();
   if (!points_ || polygon.size() < 3) return;
-  const std::vector<std::size_t> ids =
-      lasso_select(points_->positions, points_->normals, camera, viewport, polygon);
+  // Subtracting, the members inside the lasso go, whichever way they face.
+  apply_selection(lasso_select(points_->positions, points_->normals, camera, viewport, polygon), [&](const Vec<3>& m) {
+    const glm::vec3 w = camera.to_window(to_glm(m), viewport);
+    return w.z >= 0.0f && w.z <= 1.0f && inside_polygon(polygon, glm::vec2(w.x, w.y));
+  });
+}
+
+void RegionTool::finish_stroke() {
+  const BrushStroke stroke = std::move(*stroke_);
+  stroke_.reset();
+  // Subtracting, the members within the brush's sphere about any place it was put down go.
+  apply_selection(stroke.painted(), [&](const Vec<3>& m) { return stroke.covers(to_glm(m)); });
+}
+
+void RegionTool::apply_selection(std::span<const std::size_t> ids, const std::function<bool(const Vec<3>&)>& taken) {
   const bool on_active = active_ && edit != Edit::new_region;
   if (!on_active) {
     if (ids.empty()) return;
@@ -199,16 +230,20 @@ void RegionTool::finish_lasso(const Camera& camera, const Viewport& viewport) {
     const std::vector<Vec<3>> more = selected_positions(ids);
     members.insert(members.end(), more.begin(), more.end());
   } else {
-    // Members inside the lasso go, whichever way they face.
-    std::erase_if(members, [&](const Vec<3>& m) {
-      const glm::vec3 w = camera.to_window(to_glm(m), viewport);
-      return w.z >= 0.0f && w.z <= 1.0f && inside_polygon(polygon, glm::vec2(w.x, w.y));
-    });
+    std::erase_if(members, taken);
   }
   if (members.empty())
     post_(command::RemoveRegion{*active_});
   else
     post_(command::ReplaceRegion{*active_, std::move(members)});
+}
+
+void RegionTool::hover(glm::vec2 pixel, const Camera& camera, const Viewport& viewport) {
+  hover_.reset();
+  if (!points_) return;
+  if (const std::optional<std::size_t> under =
+          pick_point(points_->positions, points_->normals, camera, viewport, pixel, pick_radius_px_))
+    hover_ = points_->positions[*under];
 }
 
 void RegionTool::set_pinned(bool pinned) {

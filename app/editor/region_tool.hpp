@@ -5,6 +5,9 @@
 // - Alt+drag (or any left drag while the lasso mode is on) draws a lasso; on
 //   release the points inside it that face the viewer become a new region,
 //   or are added to or taken from the active one (the edit mode).
+// - A left drag while the brush mode is on paints with a sphere of the
+//   brush's radius (brush_stroke.hpp); on release the painted points are
+//   taken as a lasso's are.
 // - A drag of a region's centre marker moves the region: plain, it
 //   translates in the plane parallel to the screen; with Ctrl it turns about
 //   the view axis by the angle swept around the marker; with Ctrl+Shift it
@@ -12,13 +15,16 @@
 //   does not move.
 // Region edits become worker commands; while a drag runs the regions shown
 // are the tool's own, so that they follow the cursor at once. No GL.
+#include <algorithm>
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
+#include "app/editor/brush_stroke.hpp"
 #include "app/editor/command.hpp"
 #include "app/editor/editor_window.hpp"
 #include "app/editor/region_moves.hpp"
@@ -26,6 +32,9 @@
 #include "render/point_data.hpp"
 
 namespace amls::editor {
+
+// The brush's radius, in units of h, lies in this range.
+inline constexpr std::pair<float, float> kBrushRadiusH{0.5f, 50.0f};
 
 class RegionTool {
  public:
@@ -55,13 +64,26 @@ class RegionTool {
   void invert_active(double reach);
 
   bool lasso_mode = false;  // a plain left drag draws a lasso
+  bool brush_mode = false;  // a plain left drag paints with the brush (before the lasso mode)
+  float brush_radius_h = 4.0f;  // the brush's radius in units of h
   Edit edit = Edit::new_region;
+  // The grid spacing h: the brush's unit.
+  void set_spacing(double h) { spacing_ = h; }
+  double brush_radius() const { return brush_radius_h * spacing_; }
+  // The brush's radius times `factor`, kept within kBrushRadiusH.
+  void scale_brush(float factor) {
+    brush_radius_h = std::clamp(brush_radius_h * factor, kBrushRadiusH.first, kBrushRadiusH.second);
+  }
 
   std::optional<std::size_t> active() const { return active_; }
   void set_active(std::optional<std::size_t> index) { active_ = index; }
-  bool busy() const { return drag_.has_value() || !lasso_.empty(); }
+  bool busy() const { return drag_.has_value() || !lasso_.empty() || stroke_.has_value(); }
   const std::vector<RegionView>& regions() const { return regions_; }
   std::span<const glm::vec2> lasso() const { return lasso_; }
+  // The brush stroke being painted, if any.
+  const std::optional<BrushStroke>& stroke() const { return stroke_; }
+  // In brush mode, the surface point under the cursor (where the brush would paint).
+  std::optional<glm::vec3> brush_hover() const { return brush_mode ? hover_ : std::nullopt; }
   // How near (framebuffer pixels) the cursor must come to a marker to grab it.
   void set_pick_radius(float pixels) { pick_radius_px_ = pixels; }
 
@@ -78,6 +100,11 @@ class RegionTool {
   };
 
   void finish_lasso(const Camera& camera, const Viewport& viewport);
+  void finish_stroke();
+  // The points `ids` become a new region, or are added to the active one; or,
+  // subtracting, the active region's members for which `taken` holds go.
+  void apply_selection(std::span<const std::size_t> ids, const std::function<bool(const Vec<3>&)>& taken);
+  void hover(glm::vec2 pixel, const Camera& camera, const Viewport& viewport);
   void drag_to(glm::vec2 pixel, const Camera& camera, const Viewport& viewport);
   std::vector<Vec<3>> selected_positions(std::span<const std::size_t> ids) const;
 
@@ -86,6 +113,9 @@ class RegionTool {
   std::vector<RegionView> regions_;
   std::optional<std::size_t> active_;
   std::vector<glm::vec2> lasso_;
+  std::optional<BrushStroke> stroke_;
+  std::optional<glm::vec3> hover_;
+  double spacing_ = 0.0;
   std::optional<Drag> drag_;
   bool move_pending_ = false;
   float pick_radius_px_ = 12.0f;

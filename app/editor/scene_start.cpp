@@ -31,6 +31,7 @@ InitialShape start_from_scene(const Scene<D>& scene, int threads) {
       position.template head<D>() = handle;
       start.handles.push_back(position);
     }
+    start.regions = scene.history.stages.front().regions;
   }
   if (!scene.name.empty())
     start.name = scene.name;

@@ -2,7 +2,8 @@
 // A session's start from a scene (docs/scene-format.md): read and checked by
 // core's read_scene, the initial shape sampled by core's sample_scene_shape -
 // the points `amls deform` starts from, for every shape type - with the
-// scene's grid, AMLS and MLS parameters and its first stage's handles. The
+// scene's grid, AMLS and MLS parameters and its first stage's handles and
+// region handles (their members, reach, motions and pins as read). The
 // stages are not played: the editor's user drags the handles. No GL.
 #include <string>
 

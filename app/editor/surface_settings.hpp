@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/deform/mls_deformation.hpp"
+#include "core/deform/region_handle.hpp"
 #include "core/geometry/point_set.hpp"
 #include "core/resample/resample_policy.hpp"
 #include "core/resample/resampler.hpp"
@@ -47,12 +48,18 @@ void validate(const SurfaceSettings& settings);
 // stays a torus.
 using ShapeSource = std::variant<SceneShape<2>, SceneShape<3>>;
 
+// Region handles to start with, in the shape's dimension: kept as the scene
+// made them (members, reach, motion, pin), so that a session started from a
+// scene and saved again replays with the very same regions.
+using StartRegions = std::variant<std::vector<RegionHandle<2>>, std::vector<RegionHandle<3>>>;
+
 // Everything a session starts from.
 struct InitialShape {
   PointSet<3> points;  // oriented; 2D sets have z = 0 and nz = 0
   ShapeSource source;
   SurfaceSettings settings;
   std::vector<Vec<3>> handles;  // handles to start with (a scene's first stage)
+  StartRegions regions;         // region handles to start with (likewise)
   std::string name;             // shown in the title and messages
   std::vector<std::string> warnings;
   // A point-set file opened on its own: how well one resampling at h covers it,

@@ -450,6 +450,21 @@ double MlsDeformation<D>::region_gap(const Vec<D>& v) const {
   return least;
 }
 
+template <int D>
+std::optional<std::size_t> MlsDeformation<D>::region_holding(const Vec<D>& v) const {
+  for (std::size_t r = 0; r < direct_.regions.size(); ++r) {
+    const Region& region = direct_.regions[r];
+    if (region.region->contains(region.to_rest * v + region.rest_offset)) return r;
+  }
+  return std::nullopt;
+}
+
+template <int D>
+MlsLocalMap<D> MlsDeformation<D>::region_map(std::size_t region, const Vec<D>& v) const {
+  const Region& r = direct_.regions.at(region);
+  return {r.linear * v + r.offset, r.linear, false};
+}
+
 template Mat<2> normal_transform<2>(const Mat<2>&);
 template Mat<3> normal_transform<3>(const Mat<3>&);
 template Vec<2> carry_normal<2>(const Mat<2>&, const Vec<2>&);

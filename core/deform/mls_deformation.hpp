@@ -21,6 +21,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,11 @@ class MlsDeformation final : public Deformation<D> {
   // the regions are before the map (<= 0 within one; infinite without
   // regions): the map is rigid within reach and changes fast just outside.
   double region_gap(const Vec<D>& v) const;
+  // The first region (in order) whose reach holds v, if any, asked of each
+  // region's cells about v rather than of its tree; and the map there, the
+  // region's motion: what local_map gives within reach, with no fit.
+  std::optional<std::size_t> region_holding(const Vec<D>& v) const;
+  MlsLocalMap<D> region_map(std::size_t region, const Vec<D>& v) const;
   MlsKind kind() const { return kind_; }
 
   // 3D rigid and similarity: find the rotation by Newton's polar iteration

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "core/deform/strain_lattice.hpp"
@@ -395,18 +396,39 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     return stats;
   }
 
-  // Check every cell; refine those that fail. Mark those a region's reach may
-  // enter: their points within reach take the region's motion exactly.
-  constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  // The points within a region's reach take its motion exactly; only cells a
+  // region's reach may enter are asked. A cell whose points all do reads no
+  // interpolation, so it is neither checked nor refined: the map's weights
+  // change fast off the surface near a region (the gap grows with the height
+  // above it), and its volume would fail the check where its points never
+  // needed it.
   std::vector<std::uint8_t> near_region(l.cells.size(), 0);
   const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
   pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      if (needs_refinement(map, box, l.cells[k], l.corners(nodes, k), options.tolerance)) refined_of[k] = 0;
       const Vec<D> centre = box.node_position(l.cells[k]).array() + 0.5 * box.spacing;
       near_region[k] = map.region_gap(centre) <= half_diagonal ? 1 : 0;
     }
+  });
+  constexpr std::uint32_t kHeldByNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> holder(n, kHeldByNone);  // point -> the region whose reach holds it
+  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (near_region[l.point_cell[i]])
+        if (const std::optional<std::size_t> r = map.region_holding(points.positions[i]))
+          holder[i] = static_cast<std::uint32_t>(*r);
+  });
+  std::vector<std::uint8_t> all_held = near_region;
+  for (std::size_t i = 0; i < n; ++i)
+    if (holder[i] == kHeldByNone) all_held[l.point_cell[i]] = 0;
+
+  // Check every other cell; refine those that fail.
+  constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
+  pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
+    for (std::size_t k = begin; k < end; ++k)
+      if (!all_held[k] && needs_refinement(map, box, l.cells[k], l.corners(nodes, k), options.tolerance))
+        refined_of[k] = 0;
   });
   std::vector<std::size_t> to_refine;
   for (std::size_t k = 0; k < l.cells.size(); ++k)
@@ -423,7 +445,8 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   // The points.
   stats.refined_cells = refined.size();
   // Nodes and centre checks, coarse and refined; the exact points are added below.
-  stats.evaluations = nodes.size() + l.cells.size();
+  stats.evaluations = nodes.size();
+  for (std::size_t k = 0; k < l.cells.size(); ++k) stats.evaluations += all_held[k] ? 0 : 1;
   for (const Refined<D>& r : refined) stats.evaluations += r.nodes.nodes.size() + r.exact.size();
   for (const Refined<D>& r : refined)
     for (const std::uint8_t e : r.exact) stats.exact_cells += e;
@@ -438,8 +461,9 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
       const std::uint32_t k = l.point_cell[i];
       const std::uint32_t r = refined_of[k];
       Sample<D> sample;
-      if (near_region[k] && map.region_gap(p) <= 0.0) {
-        sample = exact_sample(map, p);
+      if (holder[i] != kHeldByNone) {
+        const MlsLocalMap<D> on = map.region_map(holder[i], p);
+        sample = {on.position, normal_transform<D>(on.linear)};
         ++exact_here;
       } else if (r == kInterpolated) {
         box.locate(p, t);

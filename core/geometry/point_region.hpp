@@ -8,10 +8,12 @@
 // piece), the region neither frays nor spreads from one resample to the next.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "core/geometry/kd_tree.hpp"
+#include "core/geometry/point_index.hpp"
 
 namespace amls {
 
@@ -31,7 +33,9 @@ class PointRegion {
 
   // The squared distance from x to the nearest member. Thread-safe.
   double squared_distance(const Vec<D>& x) const;
-  bool contains(const Vec<D>& x) const { return squared_distance(x) <= reach_ * reach_; }
+  // Whether a member lies within reach of x. Thread-safe; for a point near
+  // the members it looks at a few cells only, not the tree.
+  bool contains(const Vec<D>& x) const;
   // 1 for each position within reach of a member, 0 for the others.
   std::vector<std::uint8_t> mask(std::span<const Vec<D>> positions) const;
 
@@ -39,8 +43,18 @@ class PointRegion {
   std::vector<Vec<D>> members_;
   double reach_;
   Vec<D> centre_;
+  // The squared distance from x to the nearest member when that is at most
+  // the reach, infinity when no member is that near; nothing when the cells
+  // cannot tell (x, or a member, beyond the reach of their packed keys).
+  std::optional<double> near_squared(const Vec<D>& x) const;
+
   double extent_ = 0.0;
   KdTree<D> tree_;
+  // The members in cells as wide as the reach: a member within reach of x
+  // lies in the 3^D cells about x, so the questions a region is asked most
+  // (is a point on it; how far is a point just outside) need no tree search.
+  PointIndex<D> cells_;
+  bool indexed_ = false;
 };
 
 extern template class PointRegion<2>;
