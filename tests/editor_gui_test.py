@@ -467,7 +467,7 @@ def test_regions(binary, folder, amls):
         time.sleep(0.04)
         editor.move(*p)
     time.sleep(0.2)
-    xdotool("mouseup", 1)
+    editor.let_go("mouseup", 1)
     time.sleep(0.1)
     xdotool("keyup", "ctrl")
     editor.wait_idle()
