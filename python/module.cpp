@@ -21,6 +21,9 @@ PYBIND11_MODULE(amls, m) {
       "step by step (Surface, MlsDeformation) and scene files (run_scene). Points are float64 arrays of shape\n"
       "(n, 3), or (n, 2) for curves. Long calls release the GIL and stop on Ctrl+C (KeyboardInterrupt);\n"
       "results never depend on threads=. docs/python.md walks through it.";
+  // Each docstring opens with its own signature, in Python's terms (as the stub has it).
+  pybind11::options options;
+  options.disable_function_signatures();
   m.attr("__version__") = "0.1.0";
   amls::python::install_cancel_check();
   amls::python::bind_files(m);

@@ -49,7 +49,7 @@ def cgal_file(relative):
     return path
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def amls():
     import amls as module
     return module
