@@ -83,7 +83,7 @@ TEST_CASE("scene: bad scenes are rejected with a message naming the file and wha
   TempDir dir;
   CHECK(error_of(edited("\"variant\"", "\"variants\""), dir) ==
         dir.file("scene.json") + ": variants: unknown key (expected dimension, name, description, grid, shape, "
-                                 "radius_factor, widen_support, variant, deformation or stages)");
+                                 "radius_factor, widen_support, variant, deformation, regions or stages)");
   CHECK(error_of(edited("\"widen_support\": true", "\"widen_support\": 1"), dir) ==
         dir.file("scene.json") + ": widen_support: expected true or false, got 1");
   CHECK(error_of(edited("\"type\": \"circle\"", "\"type\": \"square\""), dir)
