@@ -354,11 +354,12 @@ def lasso(editor, corners):
 
 def circle_on_sphere(editor, x, y, radius, corners=12):
     """The lasso corners of a circle of `radius` about (x, y) on the front of the unit sphere, on screen, from
-    its right: the side panel can reach over the sphere's left half (its width follows its widest line), and
-    Table 1's window lies above the circles drawn here."""
+    its bottom: the press must land on the view, and the side panel (about 360 pixels wide) may reach over the
+    circle's left, Table 1's window over its right. The panel takes a press as soon as a frame has seen the
+    cursor over it."""
     out = []
     for k in range(corners):
-        a = 2 * math.pi * k / corners
+        a = math.pi * (1.5 + 2 * k / corners)
         px, py = x + radius * math.cos(a), y + radius * math.sin(a)
         out.append(orbit_to_window(editor, (px, py, math.sqrt(max(0.0, 1 - px * px - py * py)))))
     return out

@@ -4,30 +4,11 @@
 #include <vector>
 
 #include "app/editor/picking.hpp"
+#include "view_fixtures.hpp"
 
 using namespace amls;
 using namespace amls::editor;
-
-namespace {
-
-const Viewport kViewport{0, 0, 800, 600};
-
-Camera planar_camera() {
-  Camera c = Camera::planar();
-  c.fit(BoundingSphere{glm::vec3(0.0f), 1.0f}, kViewport.aspect());
-  return c;
-}
-
-Camera orbit_camera(float azimuth = 0.0f) {
-  Camera c = Camera::orbit();
-  c.azimuth_deg = azimuth;
-  c.fit(BoundingSphere{glm::vec3(0.0f), 1.0f}, kViewport.aspect());
-  return c;
-}
-
-glm::vec2 window_of(const Camera& c, const glm::vec3& p) { return glm::vec2(c.to_window(p, kViewport)); }
-
-}  // namespace
+using namespace amls::test;
 
 TEST_CASE("the ray through a point's pixel passes through the point") {
   for (const Camera& c : {planar_camera(), orbit_camera(), orbit_camera(35.0f)}) {

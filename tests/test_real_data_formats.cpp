@@ -9,16 +9,12 @@
 
 #include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
+#include "real_data_files.hpp"
 
 using namespace amls;
+using amls::test::data_file;
 
 namespace {
-
-std::string data_file(const std::string& name) {
-  const char* folder = std::getenv("AMLS_CGAL_DATA");
-  REQUIRE_MESSAGE(folder != nullptr, "AMLS_CGAL_DATA names no folder: run this through ctest (label realdata)");
-  return std::string(folder) + "/" + name;
-}
 
 // Every normal of unit length.
 bool unit_normals(const LoadedPointSet& read) {

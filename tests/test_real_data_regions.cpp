@@ -1,6 +1,4 @@
-// Region handles on a real scan: CGAL's kitten (Debian's libcgal-demo),
-// unpacked by the `cgal_data` test fixture into the folder named by
-// AMLS_CGAL_DATA. Its feet are pinned and its head moved as one piece in 40
+// Region handles on a real scan: CGAL's kitten (real_data_files.hpp). Its feet are pinned and its head moved as one piece in 40
 // steps, as a user would select and drag them in the editor.
 #include <doctest/doctest.h>
 
@@ -13,18 +11,14 @@
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/run/scene_run.hpp"
+#include "real_data_files.hpp"
 #include "surface_fixtures.hpp"
 #include "temp_dir.hpp"
 
 using namespace amls;
+using amls::test::data_file;
 
 namespace {
-
-std::string data_file(const std::string& name) {
-  const char* folder = std::getenv("AMLS_CGAL_DATA");
-  REQUIRE_MESSAGE(folder != nullptr, "AMLS_CGAL_DATA names no folder: run this through ctest (label realdata)");
-  return std::string(folder) + "/" + name;
-}
 
 nlohmann::json points_json(const std::vector<Vec<3>>& points) {
   nlohmann::json out = nlohmann::json::array();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/deform/mls_deformation.hpp"
@@ -152,4 +153,26 @@ TEST_CASE("region handle: a cap turned by 90 degrees in 10 steps stays rigid") {
   const Mat<3> step_turn = third.regions_to[1].motion.rotation_matrix() *
                            third.regions_from[1].motion.rotation_matrix().transpose();
   CHECK(std::acos((step_turn.trace() - 1.0) / 2.0) == doctest::Approx(std::numbers::pi / 20.0).epsilon(1e-12));
+}
+
+TEST_CASE("region handle: membership and distance are the nearest member's, near the region and far from it") {
+  const auto north = test::sphere_cap(kH, 1.0, 0.6);
+  const double reach = north->reach();
+  std::size_t inside = 0;
+  for (int i = -10; i <= 10; ++i)
+    for (int j = -10; j <= 10; ++j)
+      for (int k = -4; k <= 16; ++k) {
+        const Vec<3> x(0.093 * i, 0.091 * j, 0.087 * k);
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Vec<3>& m : north->members()) nearest = std::min(nearest, (m - x).squaredNorm());
+        CHECK(north->squared_distance(x) == doctest::Approx(nearest).epsilon(1e-12));
+        CHECK(north->contains(x) == (nearest <= reach * reach));
+        inside += nearest <= reach * reach ? 1 : 0;
+      }
+  CHECK(inside > 20);
+  // Members too many reaches apart for the cells' keys: the tree answers alone, the same way.
+  const PointRegion<3> sparse({Vec<3>::Zero(), Vec<3>(1e7, 0.0, 0.0)}, 1e-3);
+  CHECK(sparse.contains(Vec<3>(5e-4, 0.0, 0.0)));
+  CHECK_FALSE(sparse.contains(Vec<3>(2e-3, 0.0, 0.0)));
+  CHECK(sparse.squared_distance(Vec<3>(1e7, 3.0, 0.0)) == doctest::Approx(9.0));
 }

@@ -9,19 +9,13 @@
 
 #include "app/editor/brush_stroke.hpp"
 #include "app/editor/lasso.hpp"
+#include "view_fixtures.hpp"
 
 using namespace amls;
 using namespace amls::editor;
+using namespace amls::test;
 
 namespace {
-
-const Viewport kViewport{0, 0, 800, 600};
-
-Camera front_camera() {
-  Camera c = Camera::orbit();
-  c.fit(BoundingSphere{glm::vec3(0.0f), 1.0f}, kViewport.aspect());
-  return c;
-}
 
 // A Fibonacci sphere of radius 1 with outward normals.
 std::shared_ptr<const PreparedPoints> sphere_points(std::size_t count) {
@@ -38,13 +32,11 @@ std::shared_ptr<const PreparedPoints> sphere_points(std::size_t count) {
   return points;
 }
 
-glm::vec2 pixel_of(const Camera& c, const glm::vec3& p) { return glm::vec2(c.to_window(p, kViewport)); }
-
 }  // namespace
 
 TEST_CASE("selection: a lasso around the whole sphere takes its front and nothing of its back") {
   const auto points = sphere_points(2000);
-  const Camera camera = front_camera();
+  const Camera camera = orbit_camera();
   const std::vector<glm::vec2> square{{0, 0}, {800, 0}, {800, 600}, {0, 600}};
   const std::vector<std::size_t> ids = lasso_select(points->positions, points->normals, camera, kViewport, square);
   std::size_t facing = 0;
@@ -56,16 +48,16 @@ TEST_CASE("selection: a lasso around the whole sphere takes its front and nothin
 
 TEST_CASE("selection: a brush stroke paints a sphere about the points under the cursor, front only") {
   const auto points = sphere_points(4000);
-  const Camera camera = front_camera();
+  const Camera camera = orbit_camera();
   const float radius = 0.3f;
   BrushStroke stroke(points, radius);
-  REQUIRE(stroke.paint(camera, kViewport, pixel_of(camera, {0.0f, 0.0f, 1.0f}), 12.0f));
+  REQUIRE(stroke.paint(camera, kViewport, window_of(camera, {0.0f, 0.0f, 1.0f}), 12.0f));
   const std::size_t first = stroke.painted().size();
   CHECK(first > 50);
   for (const std::size_t i : stroke.painted()) CHECK(glm::distance(points->positions[i], stroke.centres()[0]) <= radius);
   // A stroke to the right adds the points about its new place, each once.
   const glm::vec3 right(std::sin(0.4f), 0.0f, std::cos(0.4f));
-  REQUIRE(stroke.paint(camera, kViewport, pixel_of(camera, right), 12.0f));
+  REQUIRE(stroke.paint(camera, kViewport, window_of(camera, right), 12.0f));
   CHECK(stroke.painted().size() > first);
   std::vector<int> seen(points->size(), 0);
   for (const std::size_t i : stroke.painted()) CHECK(++seen[i] == 1);
@@ -77,9 +69,9 @@ TEST_CASE("selection: a brush stroke paints a sphere about the points under the 
 
 TEST_CASE("selection: a brush wider than the sphere does not reach through to its back") {
   const auto points = sphere_points(2000);
-  const Camera camera = front_camera();
+  const Camera camera = orbit_camera();
   BrushStroke stroke(points, 3.0f);
-  REQUIRE(stroke.paint(camera, kViewport, pixel_of(camera, {0.0f, 0.0f, 1.0f}), 12.0f));
+  REQUIRE(stroke.paint(camera, kViewport, window_of(camera, {0.0f, 0.0f, 1.0f}), 12.0f));
   CHECK(stroke.painted().size() > 500);
   for (const std::size_t i : stroke.painted())
     CHECK(glm::dot(points->normals[i], camera.eye() - points->positions[i]) > 0.0f);
