@@ -1,4 +1,8 @@
 // read, write, read_mesh: the core's readers and writers (core/io).
+#include <pybind11/stl/filesystem.h>  // paths as str or os.PathLike, as resample and Surface take them
+
+#include <filesystem>
+
 #include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
 #include "python/array_conversion.hpp"
@@ -14,7 +18,8 @@ py::object normals_or_none(const PointSet<3>& points, bool has_normals, int dime
   return dimension == 2 ? py::object(to_array(to_2d(points).normals)) : py::object(to_array(points.normals));
 }
 
-py::tuple read_file(const std::string& path, int dim) {
+py::tuple read_file(const std::filesystem::path& file, int dim) {
+  const std::string path = file.string();
   if (dim != 0 && dim != 2 && dim != 3) throw std::invalid_argument("dim: must be 0 (from the file), 2 or 3");
   LoadedPointSet loaded;
   run_released([&] { loaded = read_point_set(path, dim); }, {true, path});
@@ -31,7 +36,9 @@ void write_set(const std::string& path, const py::handle& points, const py::hand
   run_released([&] { write_point_set(path, set, format, spacing); }, {true, ""});
 }
 
-void write_file(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
+void write_file(const std::filesystem::path& file, const py::handle& points, const py::handle& normals,
+                double spacing) {
+  const std::string path = file.string();
   if (dimension_of(points, "points") == 2) {
     write_set<2>(path, points, normals, spacing);
   } else {
@@ -39,7 +46,8 @@ void write_file(const std::string& path, const py::handle& points, const py::han
   }
 }
 
-py::tuple read_mesh_file(const std::string& path) {
+py::tuple read_mesh_file(const std::filesystem::path& file) {
+  const std::string path = file.string();
   TriangleMesh mesh;
   run_released([&] { mesh = read_mesh(path); }, {true, path});
   return py::make_tuple(to_array(mesh.vertices), cells_to_array(mesh.triangles));
@@ -55,7 +63,7 @@ Reads a point set, as `amls resample` does: PLY (ASCII, binary little and big en
 columns (.xyz, .pwn, .csv, .txt); the extension picks the format. The vertices of a PLY or OFF mesh
 are read as points (read_mesh reads the faces too).
 
-  path   the file
+  path   the file (str or os.PathLike)
   dim    2 or 3 forces the dimension; 0 (default): the file's `amls dim` comment, else 2 when every
          z is 0 (with a warning), else 3
 

@@ -34,6 +34,17 @@ def test_the_recorded_spacing_chooses_h_again(amls, tmp_path):
     assert report["h"] == 0.02
 
 
+def test_paths_may_be_path_objects_as_everywhere_else(amls, tmp_path):
+    points, normals = sphere(300)
+    amls.write(tmp_path / "p.ply", points, normals)
+    read_points, read_normals = amls.read(tmp_path / "p.ply")
+    assert np.array_equal(read_points, points) and np.array_equal(read_normals, normals)
+    mesh = tmp_path / "t.off"
+    mesh.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    vertices, faces = amls.read_mesh(mesh)
+    assert vertices.shape == (3, 3) and faces.tolist() == [[0, 1, 2]]
+
+
 def test_a_mesh_reads_with_its_faces(amls, tmp_path):
     path = tmp_path / "t.obj"
     path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
