@@ -122,9 +122,13 @@ class Editor:
             return len(released) >= self.releases and len(idle_frames) >= 2
         wait_for(idle, "the worker to be idle")
 
-    def view(self):
+    def view_fields(self):
+        """The fields of the newest `view` line of the log."""
         line = [l for l in self.lines() if " view mode=" in l][-1]
-        fields = dict(re.findall(r"(\w+)=(\S+)", line))
+        return dict(re.findall(r"(\w+)=(\S+)", line))
+
+    def view(self):
+        fields = self.view_fields()
         target = [float(v) for v in fields["target"].split(",")]
         width, height = (int(v) for v in fields["viewport"].split("x"))
         return {"target": target, "half_height": float(fields["half_height"]), "width": width, "height": height,
@@ -213,15 +217,15 @@ def near(color, reference, tolerance=40):
     return all(abs(int(a) - int(b)) <= tolerance for a, b in zip(color, reference))
 
 
-def drag(editor, start, end, steps=12):
+def drag(editor, start, end, steps=12, button=1):
     editor.move(*start)
     time.sleep(0.2)
-    xdotool("mousedown", 1)
+    xdotool("mousedown", button)
     for k in range(1, steps + 1):
         time.sleep(0.04)
         editor.move(round(start[0] + (end[0] - start[0]) * k / steps), round(start[1] + (end[1] - start[1]) * k / steps))
     time.sleep(0.2)
-    editor.let_go("mouseup", 1)
+    editor.let_go("mouseup", button)
 
 
 def shift_click(editor, at):
@@ -369,6 +373,32 @@ def regions_line(editor, pattern):
     return editor.wait_line(r"regions " + pattern, what="regions " + pattern)
 
 
+def regions_fields(editor):
+    """The fields before the first region in the newest `regions` line of the log (count, active, drag, ring)."""
+    line = [l for l in editor.lines() if "regions count=" in l][-1]
+    return dict(re.findall(r"(\w+)=(\S+)", line.split(" | ")[0]))
+
+
+def arc_drag(editor, centre, radius, angles, modifier=None):
+    """A left drag along an arc of `radius` about `centre` (window units) through the angles (radians,
+    counterclockwise on screen), with a modifier key held if one is given."""
+    arc = [(round(centre[0] + radius * math.cos(a)), round(centre[1] - radius * math.sin(a))) for a in angles]
+    editor.move(*arc[0])
+    time.sleep(0.2)
+    if modifier:
+        xdotool("keydown", modifier)
+        time.sleep(0.1)
+    xdotool("mousedown", 1)
+    for p in arc[1:]:
+        time.sleep(0.04)
+        editor.move(*p)
+    time.sleep(0.2)
+    editor.let_go("mouseup", 1)
+    if modifier:
+        time.sleep(0.1)
+        xdotool("keyup", modifier)
+
+
 def last_regions(editor):
     """The fields of each region in the newest `regions` line of the log."""
     line = [l for l in editor.lines() if "regions count=" in l][-1]
@@ -424,7 +454,7 @@ def test_regions(binary, folder, amls):
     editor.wait_line(r"snapshot .* load=1 dimension=3", what="the sphere to load")
     editor.wait_idle()
     h = 0.08
-    regions_line(editor, r"count=1 active=-1 \| members=\d+ pinned=1 ")
+    regions_line(editor, r"count=1 active=-1 .*\| members=\d+ pinned=1 ")
     check(True, "the editor opened the scene's pinned region")
 
     # A lasso about the front pole: a moving region.
@@ -456,26 +486,26 @@ def test_regions(binary, folder, amls):
     check(moved["translation"][0] > 0.1 and abs(moved["translation"][1]) < 0.02,
           "the marker's drag moved the region (%s)" % moved["translation"])
     marker = moved["marker"]
-    radius = 9  # within the marker's pick radius, so that the press grabs it
-    arc = [(round(marker[0] + radius * math.cos(a)), round(marker[1] - radius * math.sin(a)))
-           for a in (k * math.pi / 4 / 6 for k in range(7))]
-    editor.move(*arc[0])
-    time.sleep(0.2)
-    xdotool("keydown", "ctrl")
-    time.sleep(0.1)
-    xdotool("mousedown", 1)
-    for p in arc[1:]:
-        time.sleep(0.04)
-        editor.move(*p)
-    time.sleep(0.2)
-    editor.let_go("mouseup", 1)
-    time.sleep(0.1)
-    xdotool("keyup", "ctrl")
+    eighth = [k * math.pi / 4 / 6 for k in range(7)]
+    # 9: within the marker's pick radius, so that the press grabs it.
+    arc_drag(editor, marker, 9, eighth, modifier="ctrl")
     editor.wait_idle()
-    region = last_regions(editor)[1]
-    turn = region["rotation"]
+    turn = last_regions(editor)[1]["rotation"]
     check(0.3 < turn[2] < 1.2 and abs(turn[0]) < 1e-6 and abs(turn[1]) < 1e-6,
           "Ctrl+drag about the marker turned the region about the view axis (%s rad)" % turn)
+
+    # The active region's ring (its radius in the log): a drag along it, no key held, turns the region about
+    # the axis toward the viewer by the angle swept: an eighth of a turn clockwise, most of the way back.
+    ring = float(regions_fields(editor)["ring"])
+    check(ring > 20, "the active moving region shows its turning ring (radius %.1f)" % ring)
+    before = editor.count(r"regions .* drag=ring ")
+    arc_drag(editor, last_regions(editor)[1]["marker"], ring, [math.pi / 8 - a for a in eighth])
+    editor.wait_idle()
+    check(editor.count(r"regions .* drag=ring ") > before, "the debug log says the ring turned the region")
+    region = last_regions(editor)[1]
+    more = region["rotation"][2] - turn[2]
+    check(-1.1 < more < -0.5 and abs(region["rotation"][0]) < 1e-6 and abs(region["rotation"][1]) < 1e-6,
+          "the ring's drag turned the region back by %.3f rad about the view axis" % -more)
     points = export(editor, out, 0, 3)
 
     # The moved cap lies on the sphere moved with it, the pinned one on the sphere itself: within 0.05 h
@@ -496,6 +526,26 @@ def test_regions(binary, folder, amls):
     # Save Scene, then `amls deform` of the saved scene: its last frame is the export.
     editor.key("ctrl+shift+s")
     editor.wait_line("message level=info Saved the scene", what="the saved scene")
+
+    # In brush mode a left drag that starts off the surface orbits, as on empty space outside it, and makes
+    # no region; a middle drag orbits anywhere.
+    editor.key("b")
+    count = len(last_regions(editor))
+    azimuth = float(editor.view_fields()["azimuth"])
+    beside = orbit_to_window(editor, (1.3, 0.0, 0.0))
+    drag(editor, beside, (beside[0] - 60, beside[1]))
+    editor.wait_idle()
+    orbited = float(editor.view_fields()["azimuth"])
+    check(abs(orbited - azimuth) > 5 and len(last_regions(editor)) == count,
+          "in brush mode a left drag off the surface orbits (azimuth %.1f to %.1f) and paints nothing" %
+          (azimuth, orbited))
+    middle = editor.view_fields()
+    drag(editor, (500, 350), (500, 300), button=2)
+    editor.wait_idle()
+    check(float(editor.view_fields()["elevation"]) != float(middle["elevation"]) and
+          editor.view_fields()["target"] == middle["target"] and len(last_regions(editor)) == count,
+          "in brush mode a middle drag orbits (elevation %s to %s), not pans" %
+          (middle["elevation"], editor.view_fields()["elevation"]))
     editor.quit()
     if amls:
         replay = os.path.join(folder, "replay")

@@ -17,16 +17,19 @@ BrushStroke::BrushStroke(std::shared_ptr<const PreparedPoints> points, float rad
   marked_.assign(points_->size(), 0);
 }
 
-bool BrushStroke::paint(const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float pick_radius_px) {
+bool BrushStroke::paint(const ScreenGrid& grid, const Camera& camera, glm::vec2 pixel, float pick_radius_px) {
+  if (grid.size() != points_->size())
+    throw std::invalid_argument("a brush's screen grid holds " + std::to_string(grid.size()) + " points, its surface " +
+                                std::to_string(points_->size()));
   const std::optional<std::size_t> under =
-      pick_point(points_->positions, points_->normals, camera, viewport, pixel, pick_radius_px);
+      pick_point(grid, points_->positions, points_->normals, camera, pixel, pick_radius_px);
   if (!under) return false;
   const glm::vec3 centre = points_->positions[*under];
   // A stroke dragged slowly puts the brush down at nearly the same place many
   // times: a tenth of the radius from the last place adds nothing new worth a pass.
   if (!centres_.empty() && glm::distance(centres_.back(), centre) < 0.1f * radius_) return true;
   centres_.push_back(centre);
-  for (const std::size_t i : brush_select(points_->positions, points_->normals, camera, centre, radius_)) {
+  for (const std::size_t i : brush_select(grid, points_->positions, points_->normals, camera, centre, radius_)) {
     if (marked_[i]) continue;
     marked_[i] = 1;
     painted_.push_back(i);

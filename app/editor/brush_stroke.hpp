@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "app/editor/screen_grid.hpp"
 #include "render/camera.hpp"
 #include "render/point_data.hpp"
 
@@ -23,8 +24,11 @@ class BrushStroke {
   BrushStroke(std::shared_ptr<const PreparedPoints> points, float radius);
 
   // Paints about the point under `pixel` (nearest on screen within
-  // `pick_radius_px`, front first); false if there is none.
-  bool paint(const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float pick_radius_px);
+  // `pick_radius_px`, front first); false if there is none. `grid`, made of
+  // points() for `camera`, finds the points: a dab costs in proportion to
+  // those near it on screen, not to the surface's. Throws
+  // std::invalid_argument for a grid of another number of points.
+  bool paint(const ScreenGrid& grid, const Camera& camera, glm::vec2 pixel, float pick_radius_px);
 
   const PreparedPoints& points() const { return *points_; }
   float radius() const { return radius_; }

@@ -231,6 +231,7 @@ void EditorApp::process_input() {
   const ImGuiIO& io = ImGui::GetIO();
   const Viewport viewport = window_.viewport();
   const glm::vec2 scale = window_.pixels_per_unit();
+  view_.set_middle_orbits(regions_.brush_mode || regions_.lasso_mode);
   for (const std::string& path : window_.take_dropped_paths()) {
     log_.line([&] { return "drop " + path; });
     post(command::LoadFile{path});
@@ -247,7 +248,8 @@ void EditorApp::process_input() {
     const char* taker = "view";
     if (starts && io.WantCaptureMouse)
       taker = "ui";
-    else if (!view_.dragging() && regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
+    else if (!view_.dragging() && !view_.moving_camera() &&
+             regions_.on_event(event, viewport, scale, view_.camera(), view_.handles()))
       taker = "regions";
     if (event.type == InputEvent::Type::button)
       log_.line([&] {
@@ -408,7 +410,8 @@ void EditorApp::log_regions() {
   line.precision(9);
   const glm::vec2 ppu = window_.pixels_per_unit();
   line << "regions count=" << regions_.regions().size() << " active="
-       << (regions_.active() ? static_cast<long long>(*regions_.active()) : -1LL);
+       << (regions_.active() ? static_cast<long long>(*regions_.active()) : -1LL)
+       << " drag=" << regions_.drag_gesture() << " ring=" << (regions_.ring_shown() ? regions_.ring_radius_px() / ppu.x : 0.0f);
   for (const RegionView& r : regions_.regions()) {
     const glm::vec3 w = view_.camera().to_window(
         glm::vec3(static_cast<float>(r.centre.x()), static_cast<float>(r.centre.y()), static_cast<float>(r.centre.z())),

@@ -1,5 +1,7 @@
 #include "app/editor/lasso.hpp"
 
+#include <algorithm>
+
 namespace amls::editor {
 
 namespace {
@@ -41,11 +43,14 @@ std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std:
   return out;
 }
 
-std::vector<std::size_t> brush_select(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const glm::vec3& centre, float radius) {
+std::vector<std::size_t> brush_select(const ScreenGrid& grid, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, const Camera& camera,
+                                      const glm::vec3& centre, float radius) {
   std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < positions.size(); ++i)
+  grid.for_each_in(grid.sphere_box(centre, radius), [&](std::size_t i) {
     if (glm::distance(positions[i], centre) <= radius && faces_eye(camera, normals, positions, i)) out.push_back(i);
+  });
+  std::sort(out.begin(), out.end());
   return out;
 }
 

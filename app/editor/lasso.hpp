@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "app/editor/screen_grid.hpp"
 #include "render/camera.hpp"
 
 namespace amls::editor {
@@ -21,8 +22,12 @@ std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std:
                                       const Camera& camera, const Viewport& viewport,
                                       std::span<const glm::vec2> polygon);
 
-// The points within `radius` of `centre`; in 3D (normals given) only those facing the eye.
-std::vector<std::size_t> brush_select(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const glm::vec3& centre, float radius);
+// The points within `radius` of `centre`; in 3D (normals given) only those
+// facing the eye. `grid` (made for `camera`, of `positions`) finds them: only
+// the points whose image lies in the sphere's are looked at. In the order of
+// their indices.
+std::vector<std::size_t> brush_select(const ScreenGrid& grid, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, const Camera& camera,
+                                      const glm::vec3& centre, float radius);
 
 }  // namespace amls::editor

@@ -1,5 +1,6 @@
 #include "app/editor/picking.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -28,35 +29,29 @@ Ray pixel_ray(const Camera& camera, const Viewport& viewport, glm::vec2 pixel) {
   return Ray{a, glm::normalize(b - a)};
 }
 
-std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float radius_px,
-                                      float world_radius) {
-  const glm::vec3 eye = camera.eye();
-  const bool perspective = camera.mode == Camera::Mode::orbit;
-  // First pass: the nearest eye distance among front-facing candidates (any candidate if none faces the viewer).
-  struct Candidate {
-    std::size_t index;
-    float screen2;
-    float depth;
-  };
-  std::vector<Candidate> candidates;
-  const float r2 = radius_px * radius_px;
-  const glm::mat4 view = camera.view();
-  const glm::vec3 right = world_radius * glm::vec3(view[0][0], view[1][0], view[2][0]);
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const glm::vec3 w = camera.to_window(positions[i], viewport);
-    if (w.z < 0.0f || w.z > 1.0f) continue;
-    const float d2 = squared(glm::vec2(w) - pixel);
-    if (d2 > r2 && (world_radius <= 0.0f ||
-                    d2 > squared(glm::vec2(camera.to_window(positions[i] + right, viewport)) - glm::vec2(w))))
-      continue;
-    candidates.push_back({i, d2, perspective ? glm::length(positions[i] - eye) : -positions[i].z});
-  }
+namespace {
+
+// A point near the cursor: its squared distance on screen and its depth.
+struct Candidate {
+  std::size_t index;
+  float screen2;
+  float depth;
+};
+
+float depth_of(const Camera& camera, const glm::vec3& p) {
+  return camera.mode == Camera::Mode::orbit ? glm::length(p - camera.eye()) : -p.z;
+}
+
+// Of the candidates, the one pick_point chooses.
+std::optional<std::size_t> choose(std::span<const Candidate> candidates, std::span<const glm::vec3> positions,
+                                  std::span<const glm::vec3> normals, const Camera& camera) {
   if (candidates.empty()) return std::nullopt;
+  const glm::vec3 eye = camera.eye();
   auto facing = [&](std::size_t i) {
-    if (!perspective || normals.size() != positions.size()) return true;
+    if (camera.mode != Camera::Mode::orbit || normals.size() != positions.size()) return true;
     return glm::dot(normals[i], eye - positions[i]) > 0.0f;
   };
+  // First: the nearest eye distance among front-facing candidates (any candidate if none faces the viewer).
   bool any_facing = false;
   for (const Candidate& c : candidates) any_facing = any_facing || facing(c.index);
   float nearest_depth = std::numeric_limits<float>::infinity(), farthest_depth = -nearest_depth;
@@ -72,12 +67,48 @@ std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std:
   float best2 = std::numeric_limits<float>::infinity();
   for (const Candidate& c : candidates) {
     if ((any_facing && !facing(c.index)) || c.depth > slab) continue;
-    if (c.screen2 < best2) {
+    // Ties go to the lower index, so that the choice does not depend on the candidates' order.
+    if (c.screen2 < best2 || (c.screen2 == best2 && c.index < *best)) {
       best2 = c.screen2;
       best = c.index;
     }
   }
   return best;
+}
+
+}  // namespace
+
+std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                      const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float radius_px,
+                                      float world_radius) {
+  std::vector<Candidate> candidates;
+  const float r2 = radius_px * radius_px;
+  const glm::mat4 view = camera.view();
+  const glm::vec3 right = world_radius * glm::vec3(view[0][0], view[1][0], view[2][0]);
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const glm::vec3 w = camera.to_window(positions[i], viewport);
+    if (w.z < 0.0f || w.z > 1.0f) continue;
+    const float d2 = squared(glm::vec2(w) - pixel);
+    if (d2 > r2 && (world_radius <= 0.0f ||
+                    d2 > squared(glm::vec2(camera.to_window(positions[i] + right, viewport)) - glm::vec2(w))))
+      continue;
+    candidates.push_back({i, d2, depth_of(camera, positions[i])});
+  }
+  return choose(candidates, positions, normals, camera);
+}
+
+std::optional<std::size_t> pick_point(const ScreenGrid& grid, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, const Camera& camera, glm::vec2 pixel,
+                                      float radius_px) {
+  std::vector<Candidate> candidates;
+  const float r2 = radius_px * radius_px;
+  grid.for_each_in(ScreenGrid::Box{pixel - radius_px, pixel + radius_px}, [&](std::size_t i) {
+    const glm::vec3& w = grid.window(i);
+    if (w.z < 0.0f || w.z > 1.0f) return;
+    const float d2 = squared(glm::vec2(w) - pixel);
+    if (d2 <= r2) candidates.push_back({i, d2, depth_of(camera, positions[i])});
+  });
+  return choose(candidates, positions, normals, camera);
 }
 
 std::optional<std::size_t> pick_handle(std::span<const glm::vec3> handles, const Camera& camera,

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "app/editor/screen_grid.hpp"
 #include "render/camera.hpp"
 
 namespace amls::editor {
@@ -29,6 +30,11 @@ Ray pixel_ray(const Camera& camera, const Viewport& viewport, glm::vec2 pixel);
 std::optional<std::size_t> pick_point(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                                       const Camera& camera, const Viewport& viewport, glm::vec2 pixel, float radius_px,
                                       float world_radius = 0.0f);
+// The same among the points `grid` (made for `camera`, of `positions`) finds
+// within `radius_px` of `pixel`: it looks at those points only.
+std::optional<std::size_t> pick_point(const ScreenGrid& grid, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, const Camera& camera, glm::vec2 pixel,
+                                      float radius_px);
 
 // The handle nearest to `pixel` on screen within `radius_px`.
 std::optional<std::size_t> pick_handle(std::span<const glm::vec3> handles, const Camera& camera,

@@ -54,6 +54,12 @@ void draw_region_overlay(const RegionTool& tool, const Camera& camera, const Vie
     } else {
       draw->AddCircleFilled(c, 3.0f, marker);
     }
+    if (active && tool.ring_shown()) {
+      // The turning ring, in the plane of the screen; bolder while it turns the region.
+      const bool turning = tool.drag_gesture() == "ring";
+      draw->AddCircle(c, tool.ring_radius_px() / pixels_per_unit.x, region_colour(r, false, turning ? 1.0f : 0.7f), 64,
+                      turning ? 3.0f : 2.0f);
+    }
   }
   // The brush stroke's points, in the selection's own colour, and the brush's sphere where it would paint.
   const ImU32 selecting = IM_COL32(120, 255, 200, 220);
@@ -109,10 +115,11 @@ void draw_region_window(RegionTool& tool, double reach) {
   ImGui::RadioButton("add", &edit, 1);
   ImGui::SameLine();
   ImGui::RadioButton("subtract", &edit, 2);
-  tool.edit = static_cast<RegionTool::Edit>(edit);
+  tool.edit = static_cast<SelectionEdit>(edit);
   const std::size_t count = tool.regions().size();
   ImGui::Text("%zu region%s%s", count, count == 1 ? "" : "s",
               count > 0 ? ": drag a marker (Ctrl: turn, Ctrl+Shift: scale)" : "");
+  if (tool.ring_shown()) ImGui::TextUnformatted("drag the ring about the active marker: turn it");
   if (const std::optional<std::size_t> active = tool.active(); active && *active < count) {
     const RegionView& region = tool.regions()[*active];
     ImGui::Text("region %zu: %zu points", *active + 1, region.members.size());

@@ -1,7 +1,8 @@
 #pragma once
 // The editor's region handles on screen (Dear ImGui): each region's members
 // as dots in its own colour over the view, its centre marker as a ring (the
-// active one brighter, a pinned one with a cross), the lasso being drawn, the
+// active one brighter, a pinned one with a cross; the active moving one with
+// its turning ring about it), the lasso being drawn, the
 // brush stroke's points in the selection's colour and the brush's sphere; and
 // a small window to choose the lasso or the brush, the edit (new, add,
 // subtract), and to pin, invert or clear the active region.

@@ -6,10 +6,10 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "app/editor/lasso.hpp"
 #include "app/editor/picking.hpp"
-#include "core/geometry/point_region.hpp"
 
 namespace amls::editor {
 
@@ -74,7 +74,7 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
       return true;
     }
     if (stroke_) {
-      stroke_->paint(camera, viewport, pixel, pick_radius_px_);
+      stroke_->paint(screen_grid(camera, viewport), camera, pixel, pick_radius_px_);
       return true;
     }
     if (drag_) {
@@ -105,7 +105,11 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
   if (brush_mode && !(event.mods & GLFW_MOD_ALT)) {
     if (!points_ || points_->size() == 0 || !(brush_radius() > 0.0)) return false;
     stroke_.emplace(points_, static_cast<float>(brush_radius()));
-    stroke_->paint(camera, viewport, pixel, pick_radius_px_);
+    // Off the surface there is nothing to paint: the press is the view's (an orbit in 3D).
+    if (!stroke_->paint(screen_grid(camera, viewport), camera, pixel, pick_radius_px_)) {
+      stroke_.reset();
+      return false;
+    }
     return true;
   }
   if ((event.mods & GLFW_MOD_ALT) || lasso_mode) {
@@ -115,10 +119,24 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
   }
   // Shift+click adds a point handle, even on a marker.
   if ((event.mods & GLFW_MOD_SHIFT) && !(event.mods & GLFW_MOD_CONTROL)) return false;
-  // A region's marker under the cursor: the nearest.
+  return grab_region(pixel, event.mods, camera, viewport, handles);
+}
+
+bool RegionTool::on_ring(glm::vec2 pixel, const Camera& camera, const Viewport& viewport) const {
+  if (!ring_shown()) return false;
+  const glm::vec3 marker = camera.to_window(to_glm(regions_[*active_].centre), viewport);
+  if (marker.z < 0.0f || marker.z > 1.0f) return false;
+  return std::abs(glm::distance(glm::vec2(marker), pixel) - ring_radius_px()) <= kRingReachPicks * pick_radius_px_;
+}
+
+bool RegionTool::grab_region(glm::vec2 pixel, int mods, const Camera& camera, const Viewport& viewport,
+                             const std::vector<Vec<3>>& handles) {
+  // A region's marker under the cursor (the nearest), else the active region's ring.
   std::vector<glm::vec3> markers;
   for (const RegionView& r : regions_) markers.push_back(to_glm(r.centre));
-  const std::optional<std::size_t> hit = pick_handle(markers, camera, viewport, pixel, pick_radius_px_);
+  std::optional<std::size_t> hit = pick_handle(markers, camera, viewport, pixel, pick_radius_px_);
+  const bool ring = !hit && on_ring(pixel, camera, viewport);
+  if (ring) hit = active_;
   if (!hit) return false;
   active_ = hit;
   if (regions_[*hit].pinned) return true;  // selected, but it stays put
@@ -126,15 +144,30 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
   drag.index = *hit;
   drag.start = regions_[*hit];
   drag.handles = handles;
-  const bool ctrl = (event.mods & GLFW_MOD_CONTROL) != 0, shift = (event.mods & GLFW_MOD_SHIFT) != 0;
-  drag.gesture = ctrl ? (shift ? Gesture::scale : Gesture::rotate) : Gesture::translate;
+  const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0, shift = (mods & GLFW_MOD_SHIFT) != 0;
+  drag.by_ring = ring;
+  drag.gesture = (ring || (ctrl && !shift)) ? Gesture::rotate : (ctrl ? Gesture::scale : Gesture::translate);
   const glm::vec3 centre = to_glm(drag.start.centre);
   const std::optional<glm::vec3> under = plane_point(camera, viewport, pixel, centre);
   if (!under) return true;
   drag.grab = *under;
+  // The axis through the marker toward the viewer: the plane of the drag (parallel to the screen) turns in itself.
   drag.axis = camera.mode == Camera::Mode::planar ? glm::vec3(0, 0, 1) : glm::normalize(camera.eye() - camera.target);
   drag_ = std::move(drag);
   return true;
+}
+
+std::string_view RegionTool::drag_gesture() const {
+  if (!drag_) return "none";
+  switch (drag_->gesture) {
+    case Gesture::translate:
+      return "move";
+    case Gesture::rotate:
+      return drag_->by_ring ? "ring" : "turn";
+    case Gesture::scale:
+      return "scale";
+  }
+  return "none";
 }
 
 void RegionTool::drag_to(glm::vec2 pixel, const Camera& camera, const Viewport& viewport) {
@@ -218,31 +251,31 @@ void RegionTool::finish_stroke() {
 }
 
 void RegionTool::apply_selection(std::span<const std::size_t> ids, const std::function<bool(const Vec<3>&)>& taken) {
-  const bool on_active = active_ && edit != Edit::new_region;
-  if (!on_active) {
-    if (ids.empty()) return;
-    post_(command::AddRegion{selected_positions(ids), false});
+  post_edit(selection_command(edit, active_, regions_, selected_positions(ids), taken));
+}
+
+void RegionTool::post_edit(std::optional<Command> change) {
+  if (!change) return;
+  if (std::holds_alternative<command::AddRegion>(*change)) {
     active_ = regions_.size();  // the worker appends it
-    return;
+  } else if (const auto* removed = std::get_if<command::RemoveRegion>(&*change)) {
+    regions_.erase(regions_.begin() + static_cast<std::ptrdiff_t>(removed->index));
+    active_.reset();
   }
-  std::vector<Vec<3>> members = regions_[*active_].members;
-  if (edit == Edit::add) {
-    const std::vector<Vec<3>> more = selected_positions(ids);
-    members.insert(members.end(), more.begin(), more.end());
-  } else {
-    std::erase_if(members, taken);
-  }
-  if (members.empty())
-    post_(command::RemoveRegion{*active_});
-  else
-    post_(command::ReplaceRegion{*active_, std::move(members)});
+  post_(std::move(*change));
+}
+
+const ScreenGrid& RegionTool::screen_grid(const Camera& camera, const Viewport& viewport) {
+  if (!screen_ || !screen_->made_for(camera, viewport))
+    screen_.emplace(points_->positions, camera, viewport, std::max(2.0f, pick_radius_px_ / 3.0f));
+  return *screen_;
 }
 
 void RegionTool::hover(glm::vec2 pixel, const Camera& camera, const Viewport& viewport) {
   hover_.reset();
-  if (!points_) return;
-  if (const std::optional<std::size_t> under =
-          pick_point(points_->positions, points_->normals, camera, viewport, pixel, pick_radius_px_))
+  if (!points_ || points_->size() == 0) return;
+  if (const std::optional<std::size_t> under = pick_point(screen_grid(camera, viewport), points_->positions,
+                                                          points_->normals, camera, pixel, pick_radius_px_))
     hover_ = points_->positions[*under];
 }
 
@@ -253,20 +286,13 @@ void RegionTool::set_pinned(bool pinned) {
 }
 
 void RegionTool::remove_active() {
-  if (!active_ || busy()) return;
-  post_(command::RemoveRegion{*active_});
-  regions_.erase(regions_.begin() + static_cast<std::ptrdiff_t>(*active_));
-  active_.reset();
+  if (busy()) return;
+  post_edit(clearing_command(regions_, active_));
 }
 
 void RegionTool::invert_active(double reach) {
   if (!active_ || busy() || !points_) return;
-  const PointRegion<3> region(regions_[*active_].members, reach);
-  std::vector<Vec<3>> outside;
-  for (const glm::vec3& p : points_->positions)
-    if (!region.contains(to_vec(p))) outside.push_back(to_vec(p));
-  if (outside.empty()) return;
-  post_(command::ReplaceRegion{*active_, std::move(outside)});
+  post_edit(inversion_command(regions_, *active_, points_->positions, reach));
 }
 
 }  // namespace amls::editor

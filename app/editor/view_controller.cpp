@@ -144,7 +144,9 @@ void ViewController::move(glm::vec2 pixel, const Viewport& viewport) {
   const glm::vec2 delta = pixel - camera_drag_->last;
   camera_drag_->last = pixel;
   if (glm::length(pixel - camera_drag_->press) > 3.0f) camera_drag_->moved = true;
-  if (dimension_ == 3 && camera_drag_->button == GLFW_MOUSE_BUTTON_LEFT)
+  const bool orbits = camera_drag_->button == GLFW_MOUSE_BUTTON_LEFT ||
+                      (middle_orbits_ && camera_drag_->button == GLFW_MOUSE_BUTTON_MIDDLE);
+  if (dimension_ == 3 && orbits)
     camera_.orbit_by(-delta.x * kOrbitDegreesPerPixel, delta.y * kOrbitDegreesPerPixel);
   else
     camera_.pan_by_pixels(delta, viewport);

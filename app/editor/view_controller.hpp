@@ -1,6 +1,7 @@
 #pragma once
 // Mouse and keyboard in the editor's view: the camera (3D: orbit with the left
-// button, pan with the right or middle one; 2D: pan with any; the wheel zooms),
+// button, pan with the right or middle one - or orbit with the middle one while
+// the left paints or draws a lasso; 2D: pan with any; the wheel zooms),
 // and the handles - Shift+click on the surface adds one at the picked point,
 // a click selects, a drag moves it (2D: in the plane; 3D: in the plane through
 // it parallel to the screen; X, Y, Z lock an axis), Delete removes it, Esc
@@ -57,6 +58,11 @@ class ViewController {
   Camera& camera() { return camera_; }
   int dimension() const { return dimension_; }
   bool dragging() const { return drag_.has_value(); }
+  // Whether a button drag is moving the camera.
+  bool moving_camera() const { return camera_drag_.has_value(); }
+  // In 3D the middle button orbits instead of panning: set while a left drag
+  // paints or draws a lasso, so that the view can still turn.
+  void set_middle_orbits(bool orbits) { middle_orbits_ = orbits; }
   AxisLock lock() const { return lock_; }
   const std::vector<Vec<3>>& handles() const { return handles_; }
   std::optional<std::size_t> selected() const { return selected_; }
@@ -99,6 +105,7 @@ class ViewController {
   glm::vec2 cursor_{-1.0f};
   float pick_radius_px_ = 8.0f;
   float splat_radius_ = 0.0f;
+  bool middle_orbits_ = false;
 };
 
 }  // namespace amls::editor
