@@ -31,6 +31,7 @@ class BrushStroke {
   bool paint(const ScreenGrid& grid, const Camera& camera, glm::vec2 pixel, float pick_radius_px);
 
   const PreparedPoints& points() const { return *points_; }
+  const std::shared_ptr<const PreparedPoints>& shared_points() const { return points_; }
   float radius() const { return radius_; }
   // The points painted so far (indices into points()), in the order painted.
   std::span<const std::size_t> painted() const { return painted_; }

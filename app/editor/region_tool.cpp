@@ -74,7 +74,7 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
       return true;
     }
     if (stroke_) {
-      stroke_->paint(screen_grid(camera, viewport), camera, pixel, pick_radius_px_);
+      stroke_->paint(screen_grid(stroke_->shared_points(), camera, viewport), camera, pixel, pick_radius_px_);
       return true;
     }
     if (drag_) {
@@ -106,7 +106,7 @@ bool RegionTool::on_event(const InputEvent& event, const Viewport& viewport, glm
     if (!points_ || points_->size() == 0 || !(brush_radius() > 0.0)) return false;
     stroke_.emplace(points_, static_cast<float>(brush_radius()));
     // Off the surface there is nothing to paint: the press is the view's (an orbit in 3D).
-    if (!stroke_->paint(screen_grid(camera, viewport), camera, pixel, pick_radius_px_)) {
+    if (!stroke_->paint(screen_grid(points_, camera, viewport), camera, pixel, pick_radius_px_)) {
       stroke_.reset();
       return false;
     }
@@ -265,16 +265,20 @@ void RegionTool::post_edit(std::optional<Command> change) {
   post_(std::move(*change));
 }
 
-const ScreenGrid& RegionTool::screen_grid(const Camera& camera, const Viewport& viewport) {
-  if (!screen_ || !screen_->made_for(camera, viewport))
-    screen_.emplace(points_->positions, camera, viewport, std::max(2.0f, pick_radius_px_ / 3.0f));
+const ScreenGrid& RegionTool::screen_grid(const std::shared_ptr<const PreparedPoints>& points, const Camera& camera,
+                                           const Viewport& viewport) {
+  if (!screen_ || screen_points_.lock() != points || !screen_->made_for(camera, viewport)) {
+    // Cells of a third of the pick radius: a pick looks at the points of about 7 x 7 cells.
+    screen_.emplace(points->positions, camera, viewport, std::max(2.0f, pick_radius_px_ / 3.0f));
+    screen_points_ = points;
+  }
   return *screen_;
 }
 
 void RegionTool::hover(glm::vec2 pixel, const Camera& camera, const Viewport& viewport) {
   hover_.reset();
   if (!points_ || points_->size() == 0) return;
-  if (const std::optional<std::size_t> under = pick_point(screen_grid(camera, viewport), points_->positions,
+  if (const std::optional<std::size_t> under = pick_point(screen_grid(points_, camera, viewport), points_->positions,
                                                           points_->normals, camera, pixel, pick_radius_px_))
     hover_ = points_->positions[*under];
 }

@@ -49,10 +49,7 @@ class RegionTool {
  public:
   explicit RegionTool(std::function<void(Command)> post);
 
-  void set_points(std::shared_ptr<const PreparedPoints> points) {
-    points_ = std::move(points);
-    screen_.reset();
-  }
+  void set_points(std::shared_ptr<const PreparedPoints> points) { points_ = std::move(points); }
   // The worker's regions; taken unless a drag runs.
   void sync(const std::vector<RegionView>& regions);
   // A new shape: no lasso, no drag, no active region.
@@ -132,8 +129,10 @@ class RegionTool {
   void apply_selection(std::span<const std::size_t> ids, const std::function<bool(const Vec<3>&)>& taken);
   // Posts a region edit, and keeps the tool's own regions and active one in step with it.
   void post_edit(std::optional<Command> change);
-  // The screen grid of the points for this view: the last one, or a new one if the view or the points changed.
-  const ScreenGrid& screen_grid(const Camera& camera, const Viewport& viewport);
+  // The screen grid of `points` for this view: the last one, or a new one if
+  // the view or the points changed (a stroke keeps the points it started on).
+  const ScreenGrid& screen_grid(const std::shared_ptr<const PreparedPoints>& points, const Camera& camera,
+                                const Viewport& viewport);
   void hover(glm::vec2 pixel, const Camera& camera, const Viewport& viewport);
   void drag_to(glm::vec2 pixel, const Camera& camera, const Viewport& viewport);
   std::vector<Vec<3>> selected_positions(std::span<const std::size_t> ids) const;
@@ -146,6 +145,7 @@ class RegionTool {
   std::optional<BrushStroke> stroke_;
   std::optional<glm::vec3> hover_;
   std::optional<ScreenGrid> screen_;
+  std::weak_ptr<const PreparedPoints> screen_points_;  // the points screen_ holds
   double spacing_ = 0.0;
   std::optional<Drag> drag_;
   bool move_pending_ = false;
