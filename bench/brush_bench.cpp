@@ -88,8 +88,9 @@ int main(int argc, char** argv) try {
   }
   std::printf("points %zu, brush %.2f h, %d dabs: %zu painted (%.0f per dab)\n", count, 4.0, dabs,
               stroke.painted().size(), static_cast<double>(stroke.painted().size()) / dabs);
-  std::printf("screen grid (once per view) %.3f ms; hover (pick only) median %.3f ms; press %.3f ms; dab median %.3f ms\n",
-              grid_ms, median(hover_ms), press_ms, median(dab_ms));
+  std::printf(
+      "screen grid (once per view) %.3f ms; hover (pick only) median %.3f ms; press %.3f ms; dab median %.3f ms\n",
+      grid_ms, median(hover_ms), press_ms, median(dab_ms));
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "amls_brush_bench: %s\n", e.what());

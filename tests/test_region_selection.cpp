@@ -64,8 +64,8 @@ TEST_CASE("region selection: add joins the points to the active region, or makes
   for (const Vec<3>& p : row(30, 31)) expected.push_back(p);
   CHECK(replaced.members == expected);
   // No active region, or one that is gone: a new region.
-  CHECK(as<command::AddRegion>(selection_command(SelectionEdit::add, std::nullopt, regions, row(30, 31),
-                                                 nothing_taken)).members == row(30, 31));
+  CHECK(as<command::AddRegion>(selection_command(SelectionEdit::add, std::nullopt, regions, row(30, 31), nothing_taken))
+            .members == row(30, 31));
   CHECK(as<command::AddRegion>(selection_command(SelectionEdit::add, 5, regions, row(30, 31), nothing_taken)).members ==
         row(30, 31));
   CHECK_FALSE(selection_command(SelectionEdit::add, 1, regions, {}, nothing_taken));
@@ -78,8 +78,9 @@ TEST_CASE("region selection: subtract takes the members the selection covers, an
       as<command::ReplaceRegion>(selection_command(SelectionEdit::subtract, 0, regions, {}, right_half));
   CHECK(replaced.index == 0);
   CHECK(replaced.members == row(0, 4));
-  CHECK(as<command::RemoveRegion>(selection_command(SelectionEdit::subtract, 0, regions, {},
-                                                    [](const Vec<3>&) { return true; })).index == 0);
+  CHECK(as<command::RemoveRegion>(selection_command(SelectionEdit::subtract, 0, regions, {}, [](const Vec<3>&) {
+          return true;
+        })).index == 0);
   // Nothing covered: nothing changes (no undo step).
   CHECK_FALSE(selection_command(SelectionEdit::subtract, 0, regions, row(0, 9), nothing_taken));
 }
@@ -92,7 +93,8 @@ TEST_CASE("region selection: invert makes the points farther than the reach from
   CHECK(inverted.index == 0);
   // Point 3 lies 0.1 from member 2: within reach. Points 4 to 9 do not.
   REQUIRE(inverted.members.size() == 6);
-  for (std::size_t k = 0; k < 6; ++k) CHECK(inverted.members[k].x() == doctest::Approx(0.1 * static_cast<double>(k + 4)));
+  for (std::size_t k = 0; k < 6; ++k)
+    CHECK(inverted.members[k].x() == doctest::Approx(0.1 * static_cast<double>(k + 4)));
   // Every point within reach, or no such region: nothing to do.
   CHECK_FALSE(inversion_command(regions, 0, positions, 1.0));
   CHECK_FALSE(inversion_command(regions, 1, positions, 0.15));

@@ -145,8 +145,8 @@ TEST_CASE("selection: the brush finds in the screen grid what a look at every po
   near.distance = 1.3f;
   for (const Camera& camera : {orbit_camera(), wide, near}) {
     const ScreenGrid grid(points->positions, camera, kViewport, 5.0f);
-    for (const glm::vec3 centre : {glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.6f, 0.0f, 0.8f), glm::vec3(0.0f, -1.0f, 0.0f),
-                                   glm::normalize(glm::vec3(-0.7f, 0.5f, 0.5f))})
+    for (const glm::vec3 centre : {glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.6f, 0.0f, 0.8f),
+                                   glm::vec3(0.0f, -1.0f, 0.0f), glm::normalize(glm::vec3(-0.7f, 0.5f, 0.5f))})
       for (const float radius : {0.05f, 0.3f, 1.2f}) {
         CAPTURE(centre.x);
         CAPTURE(radius);

@@ -409,9 +409,10 @@ void EditorApp::log_regions() {
   std::ostringstream line;
   line.precision(9);
   const glm::vec2 ppu = window_.pixels_per_unit();
-  line << "regions count=" << regions_.regions().size() << " active="
-       << (regions_.active() ? static_cast<long long>(*regions_.active()) : -1LL)
-       << " drag=" << regions_.drag_gesture() << " ring=" << (regions_.ring_shown() ? regions_.ring_radius_px() / ppu.x : 0.0f);
+  line << "regions count=" << regions_.regions().size()
+       << " active=" << (regions_.active() ? static_cast<long long>(*regions_.active()) : -1LL)
+       << " drag=" << regions_.drag_gesture()
+       << " ring=" << (regions_.ring_shown() ? regions_.ring_radius_px() / ppu.x : 0.0f);
   for (const RegionView& r : regions_.regions()) {
     const glm::vec3 w = view_.camera().to_window(
         glm::vec3(static_cast<float>(r.centre.x()), static_cast<float>(r.centre.y()), static_cast<float>(r.centre.z())),

@@ -44,8 +44,8 @@ std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std:
 }
 
 std::vector<std::size_t> brush_select(const ScreenGrid& grid, std::span<const glm::vec3> positions,
-                                      std::span<const glm::vec3> normals, const Camera& camera,
-                                      const glm::vec3& centre, float radius) {
+                                      std::span<const glm::vec3> normals, const Camera& camera, const glm::vec3& centre,
+                                      float radius) {
   std::vector<std::size_t> out;
   grid.for_each_in(grid.sphere_box(centre, radius), [&](std::size_t i) {
     if (glm::distance(positions[i], centre) <= radius && faces_eye(camera, normals, positions, i)) out.push_back(i);

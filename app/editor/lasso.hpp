@@ -27,7 +27,7 @@ std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std:
 // the points whose image lies in the sphere's are looked at. In the order of
 // their indices.
 std::vector<std::size_t> brush_select(const ScreenGrid& grid, std::span<const glm::vec3> positions,
-                                      std::span<const glm::vec3> normals, const Camera& camera,
-                                      const glm::vec3& centre, float radius);
+                                      std::span<const glm::vec3> normals, const Camera& camera, const glm::vec3& centre,
+                                      float radius);
 
 }  // namespace amls::editor

@@ -266,7 +266,7 @@ void RegionTool::post_edit(std::optional<Command> change) {
 }
 
 const ScreenGrid& RegionTool::screen_grid(const std::shared_ptr<const PreparedPoints>& points, const Camera& camera,
-                                           const Viewport& viewport) {
+                                          const Viewport& viewport) {
   if (!screen_ || screen_points_.lock() != points || !screen_->made_for(camera, viewport)) {
     // Cells of a third of the pick radius: a pick looks at the points of about 7 x 7 cells.
     screen_.emplace(points->positions, camera, viewport, std::max(2.0f, pick_radius_px_ / 3.0f));

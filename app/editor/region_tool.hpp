@@ -109,12 +109,12 @@ class RegionTool {
   struct Drag {
     std::size_t index = 0;
     Gesture gesture = Gesture::translate;
-    bool by_ring = false;     // a rotation started on the ring
-    RegionView start;         // the region at mouse-down
-    glm::vec3 grab{0.0f};     // the plane point under the cursor at mouse-down
-    glm::vec3 axis{0.0f};     // the view axis (rotate)
+    bool by_ring = false;  // a rotation started on the ring
+    RegionView start;      // the region at mouse-down
+    glm::vec3 grab{0.0f};  // the plane point under the cursor at mouse-down
+    glm::vec3 axis{0.0f};  // the view axis (rotate)
     std::vector<Vec<3>> handles;
-    bool moved = false;       // the worker has a BeginDrag
+    bool moved = false;  // the worker has a BeginDrag
   };
 
   // A press at `pixel` on a marker or the active region's ring: the drag it starts.
