@@ -42,7 +42,9 @@ TEST_CASE("selection: a lasso around the whole sphere takes its front and nothin
   const auto points = sphere_points(2000);
   const Camera camera = orbit_camera();
   const std::vector<glm::vec2> square{{0, 0}, {800, 0}, {800, 600}, {0, 600}};
-  const std::vector<std::size_t> ids = lasso_select(points->positions, points->normals, camera, kViewport, square);
+  const std::vector<std::size_t> ids =
+      lasso_select(ScreenGrid(points->positions, camera, kViewport, 4.0f), points->positions, points->normals, camera,
+                   square);
   std::size_t facing = 0;
   for (std::size_t i = 0; i < points->size(); ++i)
     facing += glm::dot(points->normals[i], camera.eye() - points->positions[i]) > 0.0f ? 1 : 0;
@@ -119,7 +121,8 @@ TEST_CASE("selection: a lasso in the planar view takes the points inside it, whi
   const glm::vec2 a = window_of(camera, {-0.25f, -0.1f, 0.0f}), b = window_of(camera, {0.25f, 0.1f, 0.0f});
   const std::vector<glm::vec2> box{{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}};
   // x = -0.2 ... 0.2: points 3 to 7.
-  CHECK(lasso_select(positions, normals, camera, kViewport, box) == std::vector<std::size_t>{3, 4, 5, 6, 7});
+  CHECK(lasso_select(ScreenGrid(positions, camera, kViewport, 4.0f), positions, normals, camera, box) ==
+        std::vector<std::size_t>{3, 4, 5, 6, 7});
 }
 
 namespace {
@@ -154,6 +157,32 @@ TEST_CASE("selection: the brush finds in the screen grid what a look at every po
               brush_by_hand(*points, camera, centre, radius));
       }
   }
+}
+
+TEST_CASE("selection: the lasso finds in the screen grid what a look at every point finds, past the view's edge too") {
+  const auto points = sphere_points(6000);
+  Camera near = orbit_camera(25.0f);
+  near.distance = 2.0f;  // the sphere reaches past the view on every side
+  // A star about the view's centre whose points reach far past its edges, and a small triangle.
+  std::vector<glm::vec2> star;
+  for (int k = 0; k < 10; ++k) {
+    const float a = 0.2f * std::numbers::pi_v<float> * static_cast<float>(k), r = k % 2 == 0 ? 900.0f : 150.0f;
+    star.emplace_back(400.0f + r * std::cos(a), 300.0f + r * std::sin(a));
+  }
+  const std::vector<glm::vec2> triangle{{380, 280}, {460, 300}, {400, 350}};
+  for (const Camera& camera : {orbit_camera(), near})
+    for (const std::vector<glm::vec2>& polygon : {star, triangle}) {
+      std::vector<std::size_t> by_hand;
+      for (std::size_t i = 0; i < points->size(); ++i) {
+        const glm::vec3 w = camera.to_window(points->positions[i], kViewport);
+        if (w.z >= 0.0f && w.z <= 1.0f && inside_polygon(polygon, glm::vec2(w)) &&
+            glm::dot(points->normals[i], camera.eye() - points->positions[i]) > 0.0f)
+          by_hand.push_back(i);
+      }
+      CHECK_FALSE(by_hand.empty());
+      CHECK(lasso_select(ScreenGrid(points->positions, camera, kViewport, 5.0f), points->positions, points->normals,
+                         camera, polygon) == by_hand);
+    }
 }
 
 TEST_CASE("selection: the pick in the screen grid is the pick among all points") {

@@ -24,8 +24,8 @@ bool inside_polygon(std::span<const glm::vec2> polygon, glm::vec2 p) {
   return inside;
 }
 
-std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const Viewport& viewport,
+std::vector<std::size_t> lasso_select(const ScreenGrid& grid, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, const Camera& camera,
                                       std::span<const glm::vec2> polygon) {
   std::vector<std::size_t> out;
   if (polygon.size() < 3) return out;
@@ -34,12 +34,13 @@ std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std:
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const glm::vec3 w = camera.to_window(positions[i], viewport);
+  grid.for_each_in(ScreenGrid::Box{low, high}, [&](std::size_t i) {
+    const glm::vec3& w = grid.window(i);
     const glm::vec2 p(w.x, w.y);
-    if (w.z < 0.0f || w.z > 1.0f || glm::any(glm::lessThan(p, low)) || glm::any(glm::greaterThan(p, high))) continue;
+    if (w.z < 0.0f || w.z > 1.0f || glm::any(glm::lessThan(p, low)) || glm::any(glm::greaterThan(p, high))) return;
     if (inside_polygon(polygon, p) && faces_eye(camera, normals, positions, i)) out.push_back(i);
-  }
+  });
+  std::sort(out.begin(), out.end());
   return out;
 }
 

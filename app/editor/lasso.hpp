@@ -17,9 +17,11 @@ namespace amls::editor {
 bool inside_polygon(std::span<const glm::vec2> polygon, glm::vec2 p);
 
 // The points whose position on screen lies inside `polygon`; in 3D (normals
-// given) only those facing the eye.
-std::vector<std::size_t> lasso_select(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                      const Camera& camera, const Viewport& viewport,
+// given) only those facing the eye. `grid` (made for `camera`, of
+// `positions`) finds them: only the points in the polygon's box are looked
+// at. In the order of their indices.
+std::vector<std::size_t> lasso_select(const ScreenGrid& grid, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, const Camera& camera,
                                       std::span<const glm::vec2> polygon);
 
 // The points within `radius` of `centre`; in 3D (normals given) only those

@@ -237,7 +237,9 @@ void RegionTool::finish_lasso(const Camera& camera, const Viewport& viewport) {
   lasso_.clear();
   if (!points_ || polygon.size() < 3) return;
   // Subtracting, the members inside the lasso go, whichever way they face.
-  apply_selection(lasso_select(points_->positions, points_->normals, camera, viewport, polygon), [&](const Vec<3>& m) {
+  const std::vector<std::size_t> inside =
+      lasso_select(screen_grid(points_, camera, viewport), points_->positions, points_->normals, camera, polygon);
+  apply_selection(inside, [&](const Vec<3>& m) {
     const glm::vec3 w = camera.to_window(to_glm(m), viewport);
     return w.z >= 0.0f && w.z <= 1.0f && inside_polygon(polygon, glm::vec2(w.x, w.y));
   });
