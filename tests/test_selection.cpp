@@ -42,9 +42,8 @@ TEST_CASE("selection: a lasso around the whole sphere takes its front and nothin
   const auto points = sphere_points(2000);
   const Camera camera = orbit_camera();
   const std::vector<glm::vec2> square{{0, 0}, {800, 0}, {800, 600}, {0, 600}};
-  const std::vector<std::size_t> ids =
-      lasso_select(ScreenGrid(points->positions, camera, kViewport, 4.0f), points->positions, points->normals, camera,
-                   square);
+  const std::vector<std::size_t> ids = lasso_select(ScreenGrid(points->positions, camera, kViewport, 4.0f),
+                                                    points->positions, points->normals, camera, square);
   std::size_t facing = 0;
   for (std::size_t i = 0; i < points->size(); ++i)
     facing += glm::dot(points->normals[i], camera.eye() - points->positions[i]) > 0.0f ? 1 : 0;
