@@ -224,3 +224,19 @@ TEST_CASE("MLS rest lattice: the strain added is the step's, from the last map's
   lattice.map(MlsDeformation<3>(from, from), sphere.rest, mapped, &from_rest, nullptr, sphere.pool);
   CHECK(*std::max_element(from_rest.begin(), from_rest.end()) < 1e-9F);
 }
+
+TEST_CASE("MLS lattice: a refined cell maps and checks only the sub-cells that hold its points") {
+  RestSphere s;
+  const MlsDeformation<3> map = drag(0.5 * s.h);
+  PointSet<3> mapped;
+  const MlsLatticeStats stats = s.lattice(0.001).map(map, s.rest, mapped, nullptr, nullptr, s.pool);
+  REQUIRE(stats.refined_cells > 0);
+  // Without regions every cell is checked at its centre; the rest is the refined cells' sub-nodes and checks.
+  const std::size_t refined_evaluations = stats.evaluations - stats.exact_points - stats.nodes - stats.cells;
+  const std::size_t whole_sub_lattices = stats.refined_cells * (5 * 5 * 5 + 4 * 4 * 4);
+  MESSAGE(refined_evaluations << " evaluations in " << stats.refined_cells << " refined cells, of "
+                              << whole_sub_lattices << " for their whole sub-lattices");
+  CHECK(refined_evaluations > 0);
+  // A sphere's surface crosses a few of a cell's 64 sub-cells.
+  CHECK(2 * refined_evaluations < whole_sub_lattices);
+}

@@ -154,6 +154,27 @@ TEST_CASE("scene run: frames larger than the spacing sample are measured on it, 
   CHECK(r.distance_to_exact_h.mean == whole.distance_to_exact_h.mean);
 }
 
+TEST_CASE("scene run: the end's two-way distances measure from at most max_probes points of each set") {
+  const Scene<2> scene = short_clover();
+  SceneRunOptions options;
+  options.tracers_per_point = 4;
+  const SceneRunReport whole = run_scene<2>(scene, options);
+  REQUIRE(whole.distance_to_exact_h.count == whole.points_final);
+  REQUIRE(whole.exact_to_points_h.count == whole.tracers);
+  options.max_probes = 40;
+  const SceneRunReport r = run_scene<2>(scene, options);
+  REQUIRE(r.points_final == whole.points_final);  // the measure changes nothing of the run
+  REQUIRE(r.points_final > 40);
+  CHECK(r.distance_to_exact_h.count <= 40);
+  CHECK(r.distance_to_exact_h.count >= 20);
+  CHECK(r.exact_to_points_h.count <= 40);
+  CHECK(r.exact_to_points_h.count >= 20);
+  // Each sampled distance is one of the whole run's, so the sample's largest is at most theirs.
+  CHECK(r.distance_to_exact_h.max <= whole.distance_to_exact_h.max);
+  CHECK(r.exact_to_points_h.max <= whole.exact_to_points_h.max);
+  CHECK(r.distance_to_exact_h.mean > 0.0);
+}
+
 TEST_CASE("scene run: every:K resamples steps 0, K, 2K, ... and the final point set when it falls on one") {
   const Scene<2> scene = short_clover();
   SceneRunOptions options;

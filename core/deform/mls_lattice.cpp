@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "core/deform/strain_lattice.hpp"
@@ -21,6 +22,9 @@ namespace {
 // lattice to pay.
 constexpr double kMaxCellsPerPoint = 4.0;
 constexpr double kMinCells = 4096.0;
+
+// A point that no region's reach holds (see map()).
+constexpr std::uint32_t kHeldByNone = std::numeric_limits<std::uint32_t>::max();
 
 // The map at a point: its image, and the matrix that carries its normal
 // (normal_transform of the local map's L).
@@ -147,12 +151,14 @@ struct BoxNodes {
   }
 };
 
-// A refined cell: its sub-cells' box, all its nodes, and which sub-cells map exactly.
+// A refined cell: its sub-cells' box, the nodes of the sub-cells it maps,
+// and which of those map exactly.
 template <int D>
 struct Refined {
   Box<D> box;
   BoxNodes<D> nodes;
   std::vector<std::uint8_t> exact;
+  std::size_t checked = 0;  // sub-cells checked: those holding points to interpolate
 };
 
 // Whether the map at a cell's centre is off the interpolant by more than the
@@ -172,18 +178,30 @@ bool needs_refinement(const MlsDeformation<D>& map, const Box<D>& box, const IVe
 
 // Sub-nodes are mapped exactly; their Jacobians, which the exact map does not
 // give, are interpolated from the coarse cell's corners: errors of second
-// order in the coarse spacing, times offsets within a sub-cell.
+// order in the coarse spacing, times offsets within a sub-cell. Only the
+// sub-cells that hold some of the cell's points (`ids`) not held by a region
+// are checked and have their corners mapped: on a surface most sub-cells of
+// a cell hold none, and near a region most of the rest are held.
 template <int D>
 Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec<D>& c, const Corners<D>& corners,
-                  const MlsLatticeOptions& o) {
+                  std::span<const std::uint32_t> ids, const std::vector<Vec<D>>& positions,
+                  const std::vector<std::uint32_t>& holder, const MlsLatticeOptions& o) {
   Refined<D> r;
   r.box.origin = coarse.node_position(c);
   r.box.spacing = coarse.spacing / o.refinement;
   r.box.cells = IVec<D>::Constant(o.refinement);
-  const std::size_t nodes = r.box.count(1);
-  r.nodes.slot.resize(nodes);
-  r.nodes.nodes.reserve(nodes);
+  std::vector<std::uint8_t> interpolated(r.box.count(0), 0);
+  Vec<D> place;
+  for (const std::uint32_t i : ids)
+    if (holder[i] == kHeldByNone) interpolated[r.box.cell_index(r.box.locate(positions[i], place))] = 1;
+  std::vector<std::uint8_t> needed(r.box.count(1), 0);
+  for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells.array() - 1, [&](const IVec<D>& s) {
+    if (!interpolated[r.box.cell_index(s)]) return;
+    for (int v = 0; v < (1 << D); ++v) needed[r.box.node_index(s + corner_offset<D>(v))] = 1;
+  });
+  r.nodes.slot.assign(needed.size(), -1);
   for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells, [&](const IVec<D>& n) {
+    if (!needed[r.box.node_index(n)]) return;
     r.nodes.slot[r.box.node_index(n)] = static_cast<std::int32_t>(r.nodes.nodes.size());
     const Vec<D> x = r.box.node_position(n);
     const Vec<D> t = n.template cast<double>() / static_cast<double>(o.refinement);
@@ -193,10 +211,12 @@ Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec
     const Sample<D> exact = exact_sample(map, x);
     r.nodes.nodes.push_back({x, exact.position, make_blend<D>(x, exact.position, half_jacobian, exact.normals)});
   });
-  r.exact.resize(r.box.count(0));
+  r.exact.assign(interpolated.size(), 0);
   for_each_index_in_box<D>(IVec<D>::Zero(), r.box.cells.array() - 1, [&](const IVec<D>& s) {
+    if (!interpolated[r.box.cell_index(s)]) return;
     r.exact[r.box.cell_index(s)] =
         needs_refinement(map, r.box, s, r.nodes.corners(r.box, s), o.tolerance) ? 1 : 0;
+    ++r.checked;
   });
   return r;
 }
@@ -219,6 +239,13 @@ struct MlsRestLattice<D>::Layout {
   // Each corner's neighbours in node_list: 2a one below along axis a, 2a + 1 one above.
   std::vector<std::array<std::uint32_t, 2 * D>> neighbours;
   std::vector<std::uint32_t> point_cell;  // each point's cell, in `cells`
+  // The points cell by cell: cell k's are by_cell[cell_first[k]] up to cell_first[k + 1].
+  std::vector<std::uint32_t> cell_first;
+  std::vector<std::uint32_t> by_cell;
+
+  std::span<const std::uint32_t> points_of(std::size_t cell) const {
+    return std::span<const std::uint32_t>(by_cell).subspan(cell_first[cell], cell_first[cell + 1] - cell_first[cell]);
+  }
 
   template <typename T>
   std::array<const T*, 1 << D> corners(const std::vector<T>& at_nodes, std::size_t cell) const {
@@ -299,6 +326,12 @@ MlsRestLattice<D>::MlsRestLattice(const PointSet<D>& points, const MlsLatticeOpt
       l.neighbours[k][static_cast<std::size_t>(2 * a + 1)] = node_slot(node + IVec<D>::Unit(a));
     }
   for (std::uint32_t& c : l.point_cell) c = cell_in_list[c];
+  l.cell_first.assign(l.cells.size() + 1, 0);
+  for (const std::uint32_t c : l.point_cell) ++l.cell_first[c + 1];
+  for (std::size_t k = 0; k < l.cells.size(); ++k) l.cell_first[k + 1] += l.cell_first[k];
+  std::vector<std::uint32_t> next(l.cell_first.begin(), l.cell_first.end() - 1);
+  l.by_cell.resize(n);
+  for (std::size_t i = 0; i < n; ++i) l.by_cell[next[l.point_cell[i]]++] = static_cast<std::uint32_t>(i);
 }
 
 template <int D>
@@ -402,25 +435,25 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   // change fast off the surface near a region (the gap grows with the height
   // above it), and its volume would fail the check where its points never
   // needed it.
-  std::vector<std::uint8_t> near_region(l.cells.size(), 0);
-  const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
-  pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const Vec<D> centre = box.node_position(l.cells[k]).array() + 0.5 * box.spacing;
-      near_region[k] = map.region_gap(centre) <= half_diagonal ? 1 : 0;
-    }
-  });
-  constexpr std::uint32_t kHeldByNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint8_t> all_held(l.cells.size(), 0);
   std::vector<std::uint32_t> holder(n, kHeldByNone);  // point -> the region whose reach holds it
-  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t i = begin; i < end; ++i)
-      if (near_region[l.point_cell[i]])
-        if (const std::optional<std::size_t> r = map.region_holding(points.positions[i]))
-          holder[i] = static_cast<std::uint32_t>(*r);
-  });
-  std::vector<std::uint8_t> all_held = near_region;
-  for (std::size_t i = 0; i < n; ++i)
-    if (holder[i] == kHeldByNone) all_held[l.point_cell[i]] = 0;
+  if (!map.from_regions().empty()) {
+    const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
+    pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const Vec<D> centre = box.node_position(l.cells[k]).array() + 0.5 * box.spacing;
+        all_held[k] = map.region_gap(centre) <= half_diagonal ? 1 : 0;
+      }
+    });
+    pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (all_held[l.point_cell[i]])
+          if (const std::optional<std::size_t> r = map.region_holding(points.positions[i]))
+            holder[i] = static_cast<std::uint32_t>(*r);
+    });
+    for (std::size_t i = 0; i < n; ++i)
+      if (holder[i] == kHeldByNone) all_held[l.point_cell[i]] = 0;
+  }
 
   // Check every other cell; refine those that fail.
   constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();
@@ -439,7 +472,8 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   std::vector<Refined<D>> refined(to_refine.size());
   pool.parallel_for(to_refine.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k)
-      refined[k] = refine(map, box, l.cells[to_refine[k]], l.corners(nodes, to_refine[k]), options);
+      refined[k] = refine(map, box, l.cells[to_refine[k]], l.corners(nodes, to_refine[k]), l.points_of(to_refine[k]),
+                          points.positions, holder, options);
   });
 
   // The points.
@@ -447,7 +481,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   // Nodes and centre checks, coarse and refined; the exact points are added below.
   stats.evaluations = nodes.size();
   for (std::size_t k = 0; k < l.cells.size(); ++k) stats.evaluations += all_held[k] ? 0 : 1;
-  for (const Refined<D>& r : refined) stats.evaluations += r.nodes.nodes.size() + r.exact.size();
+  for (const Refined<D>& r : refined) stats.evaluations += r.nodes.nodes.size() + r.checked;
   for (const Refined<D>& r : refined)
     for (const std::uint8_t e : r.exact) stats.exact_cells += e;
   std::vector<std::size_t> exact_points(static_cast<std::size_t>(pool.threads()), 0);

@@ -157,9 +157,18 @@ class SceneRunner {
   const PointSet<D>& points() const { return local_ ? local_->points() : surface_->points(); }
   ThreadPool& pool() { return local_ ? local_->pool() : surface_->pool(); }
 
-  std::vector<Vec<D>> probes() const {
+  std::vector<Vec<D>> probes() const { return every_kth(tracers_.positions, probe_stride_); }
+
+  // Every k-th of `positions`, k as small as keeps them to max_probes.
+  std::vector<Vec<D>> capped_sample(const std::vector<Vec<D>>& positions) const {
+    if (options_.max_probes == 0 || positions.size() <= options_.max_probes) return positions;
+    return every_kth(positions, (positions.size() + options_.max_probes - 1) / options_.max_probes);
+  }
+
+  static std::vector<Vec<D>> every_kth(const std::vector<Vec<D>>& positions, std::size_t k) {
     std::vector<Vec<D>> out;
-    for (std::size_t i = 0; i < tracers_.size(); i += probe_stride_) out.push_back(tracers_.positions[i]);
+    out.reserve((positions.size() + k - 1) / k);
+    for (std::size_t i = 0; i < positions.size(); i += k) out.push_back(positions[i]);
     return out;
   }
 
@@ -246,9 +255,14 @@ class SceneRunner {
     }
     report_.timings += report_.per_step.back().timings;
     Stopwatch clock;
-    deformation.apply(tracers_, pool());
+    // The tracers' rotations by the polar iteration, a few times cheaper than
+    // an SVD per tracer and the same map to rounding: they only measure.
+    MlsDeformation<D> tracer_map = deformation;
+    tracer_map.use_polar_iteration(true);
+    tracer_map.reset_fallbacks();
+    tracer_map.apply(tracers_, pool());
     report_.tracer_seconds += clock.lap();
-    report_.affine_fallbacks += deformation.fallbacks();
+    report_.affine_fallbacks += deformation.fallbacks() + tracer_map.fallbacks();
   }
 
   // Without resampling, after step `step`: the surface probed for holes, and the frame.
@@ -278,8 +292,12 @@ class SceneRunner {
         surface_->refresh_normals();
         probe(surface_->surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
       }
-      report_.distance_to_exact_h = nearest_distance_stats(points.positions, tracers_.positions, report_.h, pool());
-      report_.exact_to_points_h = nearest_distance_stats(tracers_.positions, points.positions, report_.h, pool());
+      // From every k-th point of each set, at most max_probes of them: a
+      // million nearest searches each way would cost more than the run's last steps.
+      report_.distance_to_exact_h =
+          nearest_distance_stats(capped_sample(points.positions), tracers_.positions, report_.h, pool());
+      report_.exact_to_points_h =
+          nearest_distance_stats(capped_sample(tracers_.positions), points.positions, report_.h, pool());
     }
     if (report_.final_holes > 0 && !options_.resample)
       mark_broken(report_.steps, "the final surface does not cover the exact shape: F is undefined at " +

@@ -56,9 +56,11 @@ struct SceneRunOptions {
   // A frame of more points has its spacing measured on an even sample of
   // this many (core/surface/metrics.hpp, spacing_summary): measuring every
   // point of a million-point frame costs more than the step that made it.
-  static constexpr std::size_t kDefaultSpacingSample = 100000;
+  static constexpr std::size_t kDefaultSpacingSample = 20000;
   std::size_t spacing_sample = kDefaultSpacingSample;
-  // Probes: one tracer in every tracers_per_point / 4, and at most this many (0: no limit).
+  // Probes: one tracer in every tracers_per_point / 4, and at most this many
+  // (0: no limit). The end's two-way distances (final points to tracers and
+  // back) measure from at most this many of each set too, every k-th.
   std::size_t max_probes = 100000;
 };
 
