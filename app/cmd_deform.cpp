@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <variant>
 #include <stdexcept>
 
 #include "app/commands.hpp"
@@ -38,6 +39,7 @@ struct DeformOptions {
   std::size_t max_steps = 0;
   std::string json_path;
   std::string mesh_path;
+  bool keep_rims = AmlsParameters{}.keep_rims;
 };
 
 std::string frame_name(std::size_t step, std::size_t steps, const std::string& format) {
@@ -141,10 +143,12 @@ void add_deform_command(CLI::App& app) {
   cmd->add_option("--max-steps", options->max_steps, "stop after this many steps (0: all)")->capture_default_str();
   cmd->add_option("--json", options->json_path, "also write the JSON report to this file");
   cmd->add_option("--mesh", options->mesh_path, "write the last frame's surface as a mesh (.obj, .ply; 2D: a polyline)");
+  add_rims_option(*cmd, options->keep_rims);
   cmd->callback([options] {
     const ResamplePolicy policy = ResamplePolicy::parse(options->resample);
     if (!options->mesh_path.empty()) mesh_format_from_extension(options->mesh_path);
-    const AnyScene scene = read_scene(options->scene);
+    AnyScene scene = read_scene(options->scene);
+    std::visit([&](auto& s) { s.keep_rims = options->keep_rims; }, scene);
     if (const Scene<2>* s2 = std::get_if<Scene<2>>(&scene)) {
       run<2>(*s2, *options, policy);
     } else {

@@ -125,6 +125,7 @@ void add_resample_command(CLI::App& app) {
   cmd->add_flag("--accept-loss", options->accept_loss,
                 "exit 0 even when the output clearly misses part of the input (a warning is still printed)");
   add_radius_factor_option(*cmd, options->resampling.radius_factor);
+  add_rims_option(*cmd, options->resampling.keep_rims);
   add_variant_option(*cmd, options->variant);
   add_threads_option(*cmd, options->resampling.threads);
   cmd->callback([options] {

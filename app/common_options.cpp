@@ -42,6 +42,14 @@ void add_radius_factor_option(CLI::App& cmd, double& radius_factor) {
       ->capture_default_str();
 }
 
+void add_rims_option(CLI::App& cmd, bool& keep_rims) {
+  cmd.add_option("--rims", keep_rims,
+                 "open surfaces keep their rims: rim samples are found, carried into the new points, and no point is "
+                 "placed beyond the rim line they draw (off: the paper's resampler, which extends an open surface's "
+                 "rim by up to a support at every resample; a closed surface is the same either way)")
+      ->capture_default_str();
+}
+
 void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config) {
   add_radius_factor_option(cmd, config.radius_factor);
   cmd.add_option("--min-weight", config.min_weight, "F is undefined where the neighbours' weights sum to less than this")
@@ -51,6 +59,7 @@ void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config) {
                  "3D: correct F by the points' smoothed, limited offsets from it, removing the sphere fit's outward "
                  "bias on thin sheets and tubes (no effect in 2D or with raytrace)")
       ->capture_default_str();
+  add_rims_option(cmd, config.keep_rims);
   cmd.add_option("--dt", config.dt, "time between resamplings")->check(in_range(ranges::kTimeStep))->capture_default_str();
   cmd.add_option("--substeps", config.substeps, "RK4 steps per dt")
       ->check(in_range(ranges::kSubsteps))

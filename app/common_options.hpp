@@ -19,9 +19,11 @@ void add_threads_option(CLI::App& cmd, int& threads);
 // raytrace (the ray-tracing baseline, for the flow tests).
 void add_variant_option(CLI::App& cmd, std::string& variant, bool ray_tracing = false);
 void add_radius_factor_option(CLI::App& cmd, double& radius_factor);
+// --rims on|off: whether an open surface keeps its rims (AmlsParameters::keep_rims).
+void add_rims_option(CLI::App& cmd, bool& keep_rims);
 // The options of a flow test's configuration other than --grid, --variant and
-// --threads: --radius-factor, --min-weight, --dt, --substeps and the ray
-// tracer's --ray-samples and --cluster-threshold.
+// --threads: --radius-factor, --min-weight, --bias-correction, --rims, --dt,
+// --substeps and the ray tracer's --ray-samples and --cluster-threshold.
 void add_flow_test_options(CLI::App& cmd, FlowTestConfig& config);
 // --resample always|auto|every:K|local (core/resample/resample_policy.hpp); the command
 // parses it with ResamplePolicy::parse before its work, whose message names

@@ -3,8 +3,9 @@
 
     python3 tests/editor_gui_test.py build/app/editor/amls-editor [build/app/amls] [--only=regions ...]
 
-With the amls binary, the region test also replays the editor's saved scene with `amls deform`;
---only= runs the named checks alone (2d, open_without_normals, regions, frames_during_heavy_step).
+With the amls binary, the region test also replays the editor's saved scene with `amls deform`, and the open
+cap's test moves its dense cap by the saved scene for the exact shape; --only= runs the named checks alone
+(2d, open_without_normals, regions, frames_during_heavy_step, open_cap_drag).
 
 The test starts its own Xvfb (1280x800x24) on a display number Xvfb picks
 itself (-displayfd: no race with other X servers on the machine, which
@@ -21,7 +22,8 @@ editor shows that region, an Alt+drag lasso makes another, a brush stroke (B)
 a third that undo takes away; the lasso's region dragged by its marker and
 turned with Ctrl+drag moves rigidly in the export while the pinned one stays,
 and `amls deform` of the saved scene gives the export; on a heavy 3D
-scene, frames keep coming while the worker resamples.
+scene, frames keep coming while the worker resamples; an open cap (tools/open_cap/) whose bottom pole
+is dragged down in 30 steps stays open, its export on the exact shape.
 The editor's debug log (--debug-log) says when it is ready and where the view
 is. Exits 77 (skipped) without a display or xdotool.
 """
@@ -617,6 +619,85 @@ def test_open_without_normals(binary, folder):
     editor.quit()
 
 
+def cap_scene(folder):
+    """The open cap of tools/open_cap/ opening towards +y (the default view looks along -z), and a scene that
+    holds it by four handles on its equator and puts one on its bottom pole."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "open_cap"))
+    import make_cap
+    with open(os.path.join(folder, "cap.xyz"), "w") as f:
+        for p in make_cap.cap_points("y"):
+            f.write("%.10f %.10f %.10f %.10f %.10f %.10f\n" % p)
+    r = make_cap.RADIUS
+    handles = "[0, %g, 0], [%g, 0, 0], [%g, 0, 0], [0, 0, %g], [0, 0, %g]" % (-r, r, -r, r, -r)
+    return write_scene(folder, "cap.json",
+                       '{"dimension": 3, "name": "cap", "shape": {"type": "file", "path": "cap.xyz"},'
+                       ' "grid": {"spacing": 0.0436}, "widen_support": true,'
+                       ' "stages": [{"handles": [%s], "targets": [{"steps": 1, "handles": [%s]}]}]}'
+                       % (handles, handles)), make_cap
+
+
+def test_open_cap_drag(binary, folder, amls):
+    """A 30-step drag of an open cap's bottom pole a quarter of its size down keeps the cap open, and its
+    export within 0.25 h mean of the exact shape (the dense cap moved by the same deformation)."""
+    h = 0.0436
+    scene, make_cap = cap_scene(folder)
+    out, saved = os.path.join(folder, "cap.ply"), os.path.join(folder, "cap-session.json")
+    editor = Editor(binary, folder, "cap", [scene, "--export", out, "--scene-out", saved])
+    editor.wait_line(r"snapshot .* load=1 dimension=3", what="the cap to load")
+    editor.wait_idle()
+    bottom = -make_cap.RADIUS
+    start = orbit_to_window(editor, (0.0, bottom, 0.0))
+    end = orbit_to_window(editor, (0.0, bottom - 0.25, 0.0))
+    steps = 30
+    editor.move(*start)
+    time.sleep(0.2)
+    xdotool("mousedown", 1)
+    for k in range(1, steps + 1):
+        editor.move(start[0], round(start[1] + (end[1] - start[1]) * k / steps))
+        # One step per move: the next move waits for this one's surface.
+        editor.wait_line(r" snapshot .* steps=%d " % k, what="step %d's surface" % k)
+    time.sleep(0.2)
+    editor.let_go("mouseup", 1)
+    points = export(editor, out, 0, 3)
+    editor.key("ctrl+shift+s")
+    editor.wait_line(r"message level=info Saved the scene .*\(%d steps\)" % steps, what="the saved scene")
+    editor.quit()
+
+    # Open: the rim stays where the cap was cut (the equator's handles hold it); a cap closing into an egg
+    # puts points across its opening.
+    rim_radius = math.sqrt(make_cap.RADIUS ** 2 - make_cap.CUT ** 2)
+    top = max(p[1] for p in points)
+    across = [p for p in points if p[1] > make_cap.CUT - h and math.hypot(p[0], p[2]) < 0.5 * rim_radius]
+    check(top < make_cap.CUT + 0.5 * h and not across,
+          "the dragged cap stays open (%d points, top %.3f h above the cut, %d across the opening)" %
+          (len(points), (top - make_cap.CUT) / h, len(across)))
+    if not amls:
+        return
+    # The exact shape: `amls deform` of the saved scene moves every point of the dense cap (about 0.3 h apart)
+    # by the session's deformation (exact.ply, with normals); each exported point's distance to it is the
+    # distance to the tangent plane of its nearest exact point.
+    replay = os.path.join(folder, "cap-replay")
+    subprocess.run([amls, "deform", saved, "--out-dir", replay, "--tracers", "1", "--frames-every", str(steps),
+                    "--threads", "1"], check=True, capture_output=True)
+    exact = read_ply(os.path.join(replay, "exact.ply"), 6)
+    cells = {}
+    for q in exact:
+        cells.setdefault(tuple(math.floor(c / h) for c in q[:3]), []).append(q)
+
+    def nearest(p):
+        key = tuple(math.floor(c / h) for c in p[:3])
+        around = [q for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
+                  for q in cells.get((key[0] + dx, key[1] + dy, key[2] + dz), ())]
+        return min(around, key=lambda q: math.dist(p, q[:3]), default=None)
+
+    distances = []
+    for p in points:
+        q = nearest(p)
+        distances.append(abs(sum((p[i] - q[i]) * q[3 + i] for i in range(3))) / h if q else math.inf)
+    mean = sum(distances) / len(distances)
+    check(mean < 0.25, "the export lies on the exact shape: %.3f h mean, %.3f h max" % (mean, max(distances)))
+
+
 XVFB = None  # the X server the test started, if any
 
 
@@ -681,7 +762,8 @@ def main():
         tests = {"2d": lambda: test_2d(binary, folder),
                  "open_without_normals": lambda: test_open_without_normals(binary, folder),
                  "regions": lambda: test_regions(binary, folder, amls),
-                 "frames_during_heavy_step": lambda: test_frames_during_heavy_step(binary, folder)}
+                 "frames_during_heavy_step": lambda: test_frames_during_heavy_step(binary, folder),
+                 "open_cap_drag": lambda: test_open_cap_drag(binary, folder, amls)}
         for name in only or tests:
             tests[name]()
         print("all GUI checks passed in %.1f s" % (time.monotonic() - begin))

@@ -8,7 +8,8 @@ On small generated 2D point sets (a circle of points with normals):
   --uniform-support it is lost at the dense part's h, exits 1 naming the
   loss, and --accept-loss exits 0 with a warning, writing the same file;
 - an h whose output would pass the point limit is refused before any work,
-  naming a spacing that fits, and that spacing then runs.
+  naming a spacing that fits, and that spacing then runs;
+- an open arc keeps its ends, and --rims off extends them past the input's.
 """
 import json
 import math
@@ -85,6 +86,26 @@ def main():
     code, out, err = run(amls, dense, "--dim", "2", "--out", os.path.join(work, "x.xyz"), "--spacing", m.group(1))
     if "more than the limit" in err:
         fail(f"the named --spacing {m.group(1)} is refused too:\n{err}")
+
+    # An open arc (half the circle) keeps its ends; --rims off extends them, as the paper's resampler does.
+    arc = os.path.join(work, "arc.xyz")
+    with open(arc, "w") as f:
+        f.write("\n".join(circle(3.0, 3.0, 1.0, 400)[:201]) + "\n")
+    reach = {}
+    for rims in ("on", "off"):
+        kept = os.path.join(work, f"arc_{rims}.xyz")
+        code, out, err = run(amls, arc, "--dim", "2", "--out", kept, "--rims", rims)
+        if code != 0 or (rims == "on") != ("rim: " in out):
+            fail(f"--rims {rims}: expected exit 0 and the rim line only with rims kept, got {code}:\n{out}{err}")
+        with open(kept) as f:
+            points = [(float(x) - 3.0, float(y) - 3.0) for x, y, *_ in (l.split() for l in f if not l.startswith("#"))]
+        # The angle from the arc's middle (straight up), less the arc's half: past its ends, in h (h = step).
+        reach[rims] = max(abs(math.atan2(x, y)) - 0.5 * math.pi for x, y in points) / step
+    if not (reach["on"] < 0.5 and reach["off"] > 1.0):
+        fail(f"the arc's ends past the input's, in h: expected under 0.5 with rims, over 1 without, got {reach}")
+    code, out, err = run(amls, arc, "--dim", "2", "--out", os.path.join(work, "x.xyz"), "--rims", "maybe")
+    if code == 0 or "--rims" not in out + err:
+        fail(f"--rims maybe: expected a refusal naming the option, got {code}:\n{out}{err}")
     print("PASS")
 
 

@@ -171,6 +171,7 @@ FlowTestRun<D> run_flow_test(const char* test, const FlowTestConfig& config, std
   parameters.radius_factor = config.radius_factor;
   parameters.min_weight = config.min_weight;
   parameters.bias_correction = config.bias_correction;
+  parameters.keep_rims = config.keep_rims;
   if (config.variant == FlowVariant::raytrace) {
     RayTracingSurface<D> loop(grid, parameters, config.ray, config.threads);
     loop.set_points(sample(0.5 * grid.spacing()));

@@ -32,6 +32,7 @@ struct FlowTestConfig {
   double radius_factor = 3.0;
   double min_weight = AmlsParameters{}.min_weight;
   bool bias_correction = AmlsParameters{}.bias_correction;  // 3D only; the ray-tracing baseline never has it
+  bool keep_rims = AmlsParameters{}.keep_rims;
   double dt = 0.01;
   int substeps = 1;
   int threads = 1;

@@ -176,6 +176,7 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
   const std::vector<Vec<D>>& input = input_points.positions;
   AmlsParameters parameters{options.radius_factor};
   parameters.widen_support = options.widen_support;
+  parameters.keep_rims = options.keep_rims;
   DeformingSurface<D> surface(grid, parameters, options.variant, options.threads);
   surface.set_points(std::move(points));
   SupportWidening widening;

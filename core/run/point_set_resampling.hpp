@@ -32,6 +32,7 @@ struct PointSetResampling {
   // (AmlsParameters::widen_support): `amls resample` turns it on unless
   // --uniform-support; off for callers whose own surface uses one Delta.
   bool widen_support = false;
+  bool keep_rims = AmlsParameters{}.keep_rims;  // AmlsParameters::keep_rims
   Variant variant = Variant::exact;
   int threads = 1;
   double most_points = kMostResampledPoints;  // the cost limits (check_resampling_cost)

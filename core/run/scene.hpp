@@ -50,6 +50,7 @@ struct Scene {
   // (AmlsParameters::widen_support); the editor sets it for a point set it
   // opens on its own, as `amls resample` widens.
   bool widen_support = false;
+  bool keep_rims = AmlsParameters{}.keep_rims;  // AmlsParameters::keep_rims (`amls deform --rims`)
   Variant variant = Variant::exact;
   MlsKind kind = MlsKind::rigid;
   double alpha = 1.0;
@@ -60,6 +61,7 @@ struct Scene {
     AmlsParameters p;
     p.radius_factor = radius_factor;
     p.widen_support = widen_support;
+    p.keep_rims = keep_rims;
     return p;
   }
   double h() const { return grid_spacing > 0.0 ? grid_spacing : 1.0 / grid_cells; }
