@@ -8,7 +8,8 @@ For each file of DIR/points_3 and DIR/meshes (CGAL's demo data; the test fixture
 build/cgal_data/data): `amls resample FILE --out ... --mesh m.ply --accept-loss`, then, where amls
 says the mesh is closed, Open3D's verdict on it: is_watertight() (edge- and vertex-manifold, no
 self-intersection; the last run cell by cell, open3d_watertight.py), the number of crossing
-triangle pairs, the Euler characteristic and, for an input mesh Open3D finds watertight, the
+triangle pairs (and how many of them exact arithmetic proves apart:
+open3d_watertight.apart_exactly), the Euler characteristic and, for an input mesh Open3D finds watertight, the
 enclosed volume against the input's. Prints one line per file (with amls's and the check's
 seconds) and a summary that names every file not checked and why: amls refused it, took longer
 than --timeout, or wrote an open mesh (an open scan's). Exits 1 when a mesh amls calls closed is
@@ -24,7 +25,7 @@ import time
 import numpy as np
 import open3d as o3d
 
-from open3d_watertight import crossing_pairs
+from open3d_watertight import apart_exactly, crossing_pairs
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 MESH_EXTENSIONS = (".off", ".obj", ".stl")
@@ -49,11 +50,13 @@ def input_volume(path):
 def check(path, mesh_path):
     """Open3D's verdict on one closed mesh, as (watertight, line)."""
     mesh = o3d.io.read_triangle_mesh(mesh_path)
-    crossing = len(crossing_pairs(mesh))
+    pairs = crossing_pairs(mesh)
+    crossing = len(pairs)
     edge_manifold = mesh.is_edge_manifold(allow_boundary_edges=False)
     vertex_manifold = mesh.is_vertex_manifold()
     ok = edge_manifold and vertex_manifold and crossing == 0
-    line = (f"Open3D: {'watertight' if ok else 'NOT watertight'}, {crossing} crossing pairs, edge-manifold "
+    apart = f" ({sum(apart_exactly(mesh, pair) for pair in pairs)} of them apart in exact arithmetic)" if pairs else ""
+    line = (f"Open3D: {'watertight' if ok else 'NOT watertight'}, {crossing} crossing pairs{apart}, edge-manifold "
             f"{edge_manifold}, vertex-manifold {vertex_manifold}, Euler {mesh.euler_poincare_characteristic()}")
     reference = input_volume(path)
     if reference:
