@@ -10,6 +10,10 @@ namespace {
 
 Array as_array(const py::handle& object, const char* name) {
   if (object.is_none()) throw std::invalid_argument(std::string(name) + ": expected an array, got None");
+  // Array casts complex numbers to real ones by dropping their imaginary parts: refused instead.
+  const py::array as_given = py::array::ensure(object);
+  if (as_given && as_given.dtype().kind() == 'c')
+    throw std::invalid_argument(std::string(name) + ": expected real numbers, got complex ones");
   Array a = Array::ensure(object);  // null, with no Python error left set, when it is not numbers
   if (!a) throw std::invalid_argument(std::string(name) + ": expected an array of numbers");
   return a;

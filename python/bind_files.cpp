@@ -8,6 +8,7 @@
 #include "python/array_conversion.hpp"
 #include "python/bindings.hpp"
 #include "python/released_work.hpp"
+#include "python/shape_input.hpp"
 
 namespace amls::python {
 
@@ -20,9 +21,9 @@ py::object normals_or_none(const PointSet<3>& points, bool has_normals, int dime
 
 py::tuple read_file(const std::filesystem::path& file, int dim) {
   const std::string path = file.string();
-  if (dim != 0 && dim != 2 && dim != 3) throw std::invalid_argument("dim: must be 0 (from the file), 2 or 3");
+  check_dim(dim);
   LoadedPointSet loaded;
-  run_released([&] { loaded = read_point_set(path, dim); }, {true, path});
+  run_released([&] { loaded = read_file_contents([&] { return read_point_set(path, dim); }); });
   warn_all(loaded.warnings);
   py::object positions = loaded.dimension == 2 ? py::object(to_array(to_2d(loaded.points).positions))
                                                : py::object(to_array(loaded.points.positions));
@@ -33,7 +34,7 @@ template <int D>
 void write_set(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
   const PointSet<D> set = point_set_from<D>(points, normals);
   const PointFileFormat format = format_from_extension(path);
-  run_released([&] { write_point_set(path, set, format, spacing); }, {true, ""});
+  run_released([&] { write_point_set(path, set, format, spacing); });
 }
 
 void write_file(const std::filesystem::path& file, const py::handle& points, const py::handle& normals,
@@ -49,7 +50,7 @@ void write_file(const std::filesystem::path& file, const py::handle& points, con
 py::tuple read_mesh_file(const std::filesystem::path& file) {
   const std::string path = file.string();
   TriangleMesh mesh;
-  run_released([&] { mesh = read_mesh(path); }, {true, path});
+  run_released([&] { mesh = read_file_contents([&] { return read_mesh(path); }); });
   return py::make_tuple(to_array(mesh.vertices), cells_to_array(mesh.triangles));
 }
 
@@ -70,8 +71,9 @@ are read as points (read_mesh reads the faces too).
 Returns points, a float64 array (n, 3) or (n, 2), and normals of the same shape, or None when the
 file has none. Small defects are repaired with a warning (UserWarning), as on the command line:
 non-finite points dropped, duplicates merged, bad normals re-estimated.
-Raises FileNotFoundError for a missing file, OSError for one that cannot be read or parsed (the
-message names the file and the line or vertex), ValueError for an extension no reader takes.)");
+Raises FileNotFoundError for a missing file, IsADirectoryError for a directory, OSError for one
+that cannot be read or parsed (the message names the file and the line or vertex), ValueError for
+an extension no reader takes.)");
   m.def("write", &write_file, py::arg("path"), py::arg("points"), py::arg("normals") = py::none(),
         py::arg("spacing") = 0.0,
         R"(write(path, points, normals=None, spacing=0.0)
@@ -86,14 +88,16 @@ Writes a point set as `amls resample --out` does: `.ply` (binary little endian, 
             reading the file back chooses the same h (resample's report gives it as "h")
 
 The file is written through a temporary file renamed over `path`. Raises ValueError for bad arrays
-(shape, non-finite values, a zero normal among others) or an unknown extension, OSError when the
-file cannot be written.)");
+(shape, non-finite or complex values, a zero normal among others) or an unknown extension, OSError
+when the file cannot be written (FileNotFoundError for a missing folder, IsADirectoryError for a
+directory in the way).)");
   m.def("read_mesh", &read_mesh_file, py::arg("path"),
         R"(read_mesh(path) -> (vertices, faces)
 
 Reads a triangle mesh: OBJ, or PLY or OFF with faces (polygons fan-triangulated). Returns vertices,
 float64 (n, 3), and faces, int64 (m, 3) (0-based indices); a file without faces gives no faces.
-Raises FileNotFoundError for a missing file, OSError for one that cannot be read.)");
+Raises FileNotFoundError for a missing file, IsADirectoryError for a directory, OSError for one
+that cannot be read, ValueError for an extension no mesh reader takes.)");
 }
 
 }  // namespace amls::python

@@ -45,16 +45,11 @@ void resample_opened(const OpenedShape& shape, const std::string& input, PointSe
   out.points = held_in_3d(result.points);
   out.report = resampling_report_json(result, options, run).dump();
   out.clear_loss = result.coverage.clear_loss();
-  if (out.clear_loss) out.loss_message = (input.empty() ? std::string("points") : input) + ": " + result.coverage.loss_message();
+  if (out.clear_loss)
+    out.loss_message = (input.empty() ? std::string("points") : input) + ": " + result.coverage.loss_message();
 }
 
 // Opens the shape (h chosen, normals estimated) on the released thread.
-OpenedShape open_input(const std::string& path, std::optional<SurfaceInput>& arrays, const ShapeOpening& opening,
-                       ThreadPool& pool) {
-  if (!path.empty()) return open_shape_file(path, opening, pool);
-  return open_shape(std::move(*arrays), opening, pool);
-}
-
 py::tuple resample(py::object points, py::object normals, py::object spacing, py::object grid, double radius_factor,
                    const std::string& variant, bool uniform_support, bool accept_loss, int dim, int threads,
                    const std::string& mesh) {
@@ -62,27 +57,26 @@ py::tuple resample(py::object points, py::object normals, py::object spacing, py
   const ShapeArguments shape{std::move(points), std::move(normals), dim};
   ShapeOpening opening;
   opening.resampling = resampling_options(spacing, grid, radius_factor, variant, uniform_support, threads);
+  check_dim(dim);
   opening.dimension = dim;
   if (!mesh.empty()) mesh_format_from_extension(mesh);
   const std::string path = shape_path(shape);
   std::optional<SurfaceInput> arrays;
   if (path.empty()) arrays = arrays_input(shape);
   Resampled out;
-  run_released(
-      [&] {
-        ThreadPool pool(threads);
-        OpenedShape opened = open_input(path, arrays, opening, pool);
-        out.warnings = opened.warnings;
-        PointSetResampling options = opening.resampling;
-        options.spacing = opened.spacing.h;
-        options.grid = 0;
-        if (opened.dimension == 2) {
-          resample_opened<2>(opened, path, options, mesh, clock, out);
-        } else {
-          resample_opened<3>(opened, path, options, mesh, clock, out);
-        }
-      },
-      {!path.empty(), path});
+  run_released([&] {
+    ThreadPool pool(threads);
+    OpenedShape opened = open_input(path, arrays, opening, pool);
+    out.warnings = opened.warnings;
+    PointSetResampling options = opening.resampling;
+    options.spacing = opened.spacing.h;
+    options.grid = 0;
+    if (opened.dimension == 2) {
+      resample_opened<2>(opened, path, options, mesh, clock, out);
+    } else {
+      resample_opened<3>(opened, path, options, mesh, clock, out);
+    }
+  });
   warn_all(out.warnings);
   if (out.clear_loss) {
     if (!accept_loss)
@@ -98,13 +92,14 @@ py::tuple resample(py::object points, py::object normals, py::object spacing, py
 
 template <int D>
 void mesh_of(const OpenedShape& opened, const PointSetResampling& options, const std::string& out_path,
-                  ThreadPool& pool, SurfaceMesh<D>& mesh) {
+             ThreadPool& pool, SurfaceMesh<D>& mesh) {
   const PointSet<D> points = from_3d<D>(opened.points);
   const Grid<D> grid = resampling_grid(points, opened.spacing.h, options.radius_factor);
   mesh = extract_mesh(points, grid, AmlsParameters{options.radius_factor}, options.variant, pool).mesh;
   if (mesh.cells.empty())
-    throw std::runtime_error("no mesh: the surface crosses no grid edge near the points (F is undefined or of one "
-                             "sign there; are the points too sparse for h?)");
+    throw std::runtime_error(
+        "no mesh: the surface crosses no grid edge near the points (F is undefined or of one "
+        "sign there; are the points too sparse for h?)");
   if (!out_path.empty()) write_surface_mesh(out_path, mesh);
 }
 
@@ -120,18 +115,16 @@ py::tuple mesh(py::object points, py::object normals, py::object spacing, py::ob
   int dimension = 3;
   SurfaceMesh<2> mesh2;
   SurfaceMesh<3> mesh3;
-  run_released(
-      [&] {
-        ThreadPool pool(threads);
-        const OpenedShape opened = open_input(path, arrays, opening, pool);
-        dimension = opened.dimension;
-        if (dimension == 2) {
-          mesh_of<2>(opened, opening.resampling, out, pool, mesh2);
-        } else {
-          mesh_of<3>(opened, opening.resampling, out, pool, mesh3);
-        }
-      },
-      {!path.empty() || !out.empty(), path});
+  run_released([&] {
+    ThreadPool pool(threads);
+    const OpenedShape opened = open_input(path, arrays, opening, pool);
+    dimension = opened.dimension;
+    if (dimension == 2) {
+      mesh_of<2>(opened, opening.resampling, out, pool, mesh2);
+    } else {
+      mesh_of<3>(opened, opening.resampling, out, pool, mesh3);
+    }
+  });
   if (dimension == 2) return py::make_tuple(to_array(mesh2.vertices), cells_to_array(mesh2.cells));
   return py::make_tuple(to_array(mesh3.vertices), cells_to_array(mesh3.cells));
 }
@@ -177,8 +170,11 @@ unless accept_loss.
 Returns the new points and their normals (float64, the input's dimension) and the report: a dict
 with the keys of `amls resample --json` (h, points_in, points_out, spacing_h, coverage, rim,
 seconds, peak_memory_mib, ...; "output" is "" as nothing is written).
-Raises ValueError for arguments out of range or bad arrays (shape, NaN, zero normals), OSError for
-a file that cannot be read or written, RuntimeError when no h can be chosen or no point results.)");
+Raises ValueError for arguments out of range or bad arrays (shape, NaN, complex, zero normals), when
+no h can be chosen (too few distinct points: give spacing or grid) and when h is past the cost
+limits (the message names the spacing that would fit); OSError for a file that cannot be read or
+written (FileNotFoundError, IsADirectoryError, PermissionError where the system says so); and
+RuntimeError when the output misses part of the input (without accept_loss) or no point results.)");
   m.def("mesh", &mesh, py::arg("points"), py::arg("normals") = py::none(), py::kw_only(),
         py::arg("spacing") = py::none(), py::arg("grid") = py::none(), py::arg("radius_factor") = 3.0,
         py::arg("variant") = "exact", py::arg("threads") = 1, py::arg("out") = "",

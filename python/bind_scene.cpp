@@ -1,6 +1,4 @@
 // run_scene: `amls deform` (core/run/scene_run) on a scene file.
-#include <filesystem>
-
 #include "core/io/point_set_io.hpp"
 #include "core/run/scene_report_json.hpp"
 #include "core/util/parameter_ranges.hpp"
@@ -38,15 +36,13 @@ py::tuple run_scene_file(const std::string& path, const std::string& resample, i
   options.threads = threads;
   options.tracers_per_point = tracers;
   options.max_steps = max_steps;
-  if (!std::filesystem::exists(path)) {
-    PyErr_SetString(PyExc_FileNotFoundError, (path + ": no such file").c_str());
-    throw py::error_already_set();
-  }
   SceneResult out;
   run_released([&] {
     const AnyScene scene = [&] {
       try {
         return read_scene(path);
+      } catch (const FileError&) {
+        throw;  // missing, a directory, unreadable: an OSError
       } catch (const std::runtime_error& e) {
         // Not the file but its contents: a key, a value out of range, bad JSON.
         throw std::invalid_argument(e.what());
@@ -81,8 +77,9 @@ sampling quality and the distance to the exact deformed shape.
   max_steps  stop after this many steps (0: all)
 
 Returns the last frame's points and normals and the report: a dict with the keys of
-`amls deform --json`. Raises FileNotFoundError for a missing scene, ValueError for a scene whose
-contents are wrong (the message names the key) and for arguments out of range.)");
+`amls deform --json`. Raises FileNotFoundError for a missing scene, IsADirectoryError for a
+directory (both OSError), ValueError for a scene whose contents are wrong (the message names the
+key) and for arguments out of range.)");
 }
 
 }  // namespace amls::python

@@ -137,26 +137,24 @@ class Surface {
     std::optional<SurfaceInput> arrays;
     if (path.empty()) arrays = arrays_input(shape);
     std::vector<std::string> warnings;
-    run_released(
-        [&] {
-          ThreadPool pool(threads);
-          OpenedShape opened = path.empty() ? open_shape(std::move(*arrays), opening, pool)
-                                            : open_shape_file(path, opening, pool);
-          warnings = opened.warnings;
-          h_ = opened.spacing.h;
-          AmlsParameters parameters{radius_factor};
-          parameters.widen_support = opening.resampling.widen_support;
-          if (opened.dimension == 2) {
-            PointSet<2> p = to_2d(opened.points);
-            const Grid<2> g = resampling_grid(p, h_, radius_factor);
-            surface_.emplace<1>(std::make_unique<SurfaceOf<2>>(g, parameters, opening.resampling.variant, threads, std::move(p)));
-          } else {
-            const Grid<3> g = resampling_grid(opened.points, h_, radius_factor);
-            surface_.emplace<2>(std::make_unique<SurfaceOf<3>>(g, parameters, opening.resampling.variant, threads,
-                                                              std::move(opened.points)));
-          }
-        },
-        {!path.empty(), path});
+    run_released([&] {
+      ThreadPool pool(threads);
+      OpenedShape opened = open_input(path, arrays, opening, pool);
+      warnings = opened.warnings;
+      h_ = opened.spacing.h;
+      AmlsParameters parameters{radius_factor};
+      parameters.widen_support = opening.resampling.widen_support;
+      if (opened.dimension == 2) {
+        PointSet<2> p = to_2d(opened.points);
+        const Grid<2> g = resampling_grid(p, h_, radius_factor);
+        surface_.emplace<1>(
+            std::make_unique<SurfaceOf<2>>(g, parameters, opening.resampling.variant, threads, std::move(p)));
+      } else {
+        const Grid<3> g = resampling_grid(opened.points, h_, radius_factor);
+        surface_.emplace<2>(std::make_unique<SurfaceOf<3>>(g, parameters, opening.resampling.variant, threads,
+                                                           std::move(opened.points)));
+      }
+    });
     warn_all(warnings);
   }
 
@@ -217,15 +215,12 @@ class Surface {
     return visit([&](auto& s) {
       constexpr int D = std::remove_reference_t<decltype(s)>::dimension;
       SurfaceMesh<D> mesh;
-      run_released(
-          [&] {
-            std::lock_guard lock(mutex_);
-            mesh = extract_mesh(s.evaluable(), s.loop().variant(), s.loop().pool()).mesh;
-            if (mesh.cells.empty())
-              throw std::runtime_error("no mesh: the surface crosses no grid edge near the points");
-            if (!out.empty()) write_surface_mesh(out, mesh);
-          },
-          {!out.empty(), ""});
+      run_released([&] {
+        std::lock_guard lock(mutex_);
+        mesh = extract_mesh(s.evaluable(), s.loop().variant(), s.loop().pool()).mesh;
+        if (mesh.cells.empty()) throw std::runtime_error("no mesh: the surface crosses no grid edge near the points");
+        if (!out.empty()) write_surface_mesh(out, mesh);
+      });
       return py::make_tuple(to_array(mesh.vertices), cells_to_array(mesh.cells));
     });
   }

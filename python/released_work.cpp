@@ -3,9 +3,9 @@
 #include <pybind11/pybind11.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <exception>
-#include <filesystem>
 #include <future>
 #include <stdexcept>
 
@@ -34,7 +34,32 @@ void install_cancel_check() {
   ThreadPool::set_default_cancel_check([] { return stop_requested.load(std::memory_order_relaxed); });
 }
 
-void run_released(const std::function<void()>& work, const WorkFiles& files) {
+void raise_file_error(int error, const char* message) {
+  PyObject* type = PyExc_OSError;
+  switch (error) {
+    case ENOENT:
+      type = PyExc_FileNotFoundError;
+      break;
+    case EISDIR:
+      type = PyExc_IsADirectoryError;
+      break;
+    case ENOTDIR:
+      type = PyExc_NotADirectoryError;
+      break;
+    case EEXIST:
+      type = PyExc_FileExistsError;
+      break;
+    case EACCES:
+    case EPERM:
+      type = PyExc_PermissionError;
+      break;
+    default:
+      break;
+  }
+  raise_python(type, message);
+}
+
+void run_released(const std::function<void()>& work) {
   std::future<void> done;
   bool interrupted = false;
   {
@@ -61,10 +86,10 @@ void run_released(const std::function<void()>& work, const WorkFiles& files) {
     raise_python(PyExc_KeyboardInterrupt, e.what());
   } catch (const std::invalid_argument&) {
     throw;
-  } catch (const std::runtime_error& e) {
-    if (!files.files) throw;
-    const bool missing = !files.missing_path.empty() && !std::filesystem::exists(files.missing_path);
-    raise_python(missing ? PyExc_FileNotFoundError : PyExc_OSError, e.what());
+  } catch (const FileError& e) {
+    raise_file_error(e.error(), e.what());
+  } catch (const UnreadableFile& e) {
+    raise_python(PyExc_OSError, e.what());
   }
 }
 

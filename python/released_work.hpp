@@ -11,23 +11,43 @@
 // Python exception is raised.
 //
 // C++ exceptions come back as Python's: std::invalid_argument as ValueError
-// (pybind11's own translation), and with `files` set, every other
-// std::runtime_error as OSError (FileNotFoundError for a path that does not
-// exist), since the core reports a file it cannot read or write so.
+// (pybind11's own translation); FileError (a file the system refused) as the
+// OSError its errno names (FileNotFoundError, IsADirectoryError,
+// PermissionError, ...); UnreadableFile (a file read_file_contents() could not
+// parse) as OSError; any other std::runtime_error as RuntimeError. Each keeps
+// the command line's message.
 #include <functional>
-#include <string>
+#include <stdexcept>
+
+#include "core/util/file_error.hpp"
 
 namespace amls::python {
 
 // Installs the pools' cancellation check; call once, at import.
 void install_cancel_check();
 
-struct WorkFiles {
-  bool files = false;       // runtime errors are about files: OSError
-  std::string missing_path;  // FileNotFoundError if this path does not exist ("" : none)
+// Runs `work` as above; call with the GIL held.
+void run_released(const std::function<void()>& work);
+
+// A file opened but not understood: a bad number, a truncated header, no points.
+struct UnreadableFile : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
-// Runs `work` as above; call with the GIL held.
-void run_released(const std::function<void()>& work, const WorkFiles& files = {});
+// `read()`, a reader of one file, with its std::runtime_errors (other than
+// FileError, which says more) thrown as UnreadableFile.
+template <typename Read>
+auto read_file_contents(Read&& read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const FileError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw UnreadableFile(e.what());
+  }
+}
+
+// Raises the OSError subclass Python has for errno value `error` (OSError itself for 0 or one it has none for).
+[[noreturn]] void raise_file_error(int error, const char* message);
 
 }  // namespace amls::python

@@ -2,8 +2,13 @@
 
 #include "core/io/point_set_io.hpp"
 #include "core/util/parameter_ranges.hpp"
+#include "python/released_work.hpp"
 
 namespace amls::python {
+
+void check_dim(int dim) {
+  if (dim != 0 && dim != 2 && dim != 3) throw std::invalid_argument("dim: must be 0 (from the file), 2 or 3");
+}
 
 std::string shape_path(const ShapeArguments& shape) {
   const py::object os_path = py::module_::import("os").attr("PathLike");
@@ -25,6 +30,13 @@ SurfaceInput arrays_input(const ShapeArguments& shape) {
   return input;
 }
 
+OpenedShape open_input(const std::string& path, std::optional<SurfaceInput>& arrays, const ShapeOpening& opening,
+                       ThreadPool& pool) {
+  if (path.empty()) return open_shape(std::move(*arrays), opening, pool);
+  pool.poll_cancel();
+  return open_shape(read_file_contents([&] { return read_surface_input(path, opening.dimension); }), opening, pool);
+}
+
 PointSetResampling resampling_options(const py::object& spacing, const py::object& grid, double radius_factor,
                                       const std::string& variant, bool uniform_support, int threads) {
   PointSetResampling r;
@@ -37,7 +49,8 @@ PointSetResampling resampling_options(const py::object& spacing, const py::objec
     const double cells = grid.cast<double>();
     check_range("grid", cells, ranges::kGridCells);
     r.grid = static_cast<int>(cells);
-    if (r.grid != cells) throw std::invalid_argument("grid: must be a whole number of cells, got " + format_number(cells));
+    if (r.grid != cells)
+      throw std::invalid_argument("grid: must be a whole number of cells, got " + format_number(cells));
   }
   check_range("radius_factor", radius_factor, ranges::kRadiusFactor);
   check_range("threads", threads, ranges::kThreads);

@@ -5,11 +5,11 @@
 #include "app/editor/edit_session.hpp"
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/run/scene_run.hpp"
 #include "core/run/shape_opening.hpp"
-#include "core/geometry/shapes.hpp"
 #include "editor_test_support.hpp"
 
 using namespace amls;
@@ -82,11 +82,13 @@ TEST_CASE("a point-set file opens with h from its spacing, and the coverage of o
   CHECK(shape.settings.spacing == doctest::Approx(2.0 * 3.14159265 * 0.25 / 200).epsilon(0.01));
   CHECK(shape.settings.widen_support);
   CHECK(shape.coverage == "resampled at h: 100.00 % of the 200 input points covered, 100.00 % of the " +
-                              std::to_string(resample_point_set(to_2d(shape.points), [&] {
-                                PointSetResampling o;
-                                o.spacing = shape.settings.spacing;
-                                return o;
-                              }()).points.size()) +
+                              std::to_string(resample_point_set(to_2d(shape.points),
+                                                                [&] {
+                                                                  PointSetResampling o;
+                                                                  o.spacing = shape.settings.spacing;
+                                                                  return o;
+                                                                }())
+                                                 .points.size()) +
                               " output points on the input, 0.00 % in gaps");
   CHECK_FALSE(shape.coverage_loss);
 }
@@ -124,7 +126,8 @@ TEST_CASE("a point-set file without normals opens as amls resample opens it: nor
   CHECK(shape.dimension() == 3);
   REQUIRE(shape.points.size() == sphere.size());
   std::size_t outward = 0;
-  for (std::size_t i = 0; i < sphere.size(); ++i) outward += shape.points.normals[i].dot(sphere.normals[i]) > 0.9 ? 1 : 0;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+    outward += shape.points.normals[i].dot(sphere.normals[i]) > 0.9 ? 1 : 0;
   CHECK(outward == sphere.size());
   // The command line's h, to the editor's 3 significant digits.
   const double rule = choose_spacing(sphere.positions, PointSetResampling{}).h;
@@ -145,7 +148,8 @@ TEST_CASE("a point-set file too small, empty or missing is refused with its name
   amls::test::TempDir dir;
   const std::string few = dir.file("few.xyz");
   write_text(few, "0 0 0\n1 0 0\n0 1 0\n");
-  CHECK_THROWS_WITH_AS(load_initial_shape(few, 1), doctest::Contains("few.xyz: cannot choose h"), std::runtime_error);
+  CHECK_THROWS_WITH_AS(load_initial_shape(few, 1), doctest::Contains("few.xyz: cannot choose h"),
+                       std::invalid_argument);
   write_text(dir.file("empty.xyz"), "# nothing\n");
   CHECK_THROWS_WITH_AS(load_initial_shape(dir.file("empty.xyz"), 1), doctest::Contains("empty.xyz: holds no points"),
                        std::runtime_error);

@@ -1,10 +1,12 @@
 #include <doctest/doctest.h>
 
 #include <bit>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <random>
@@ -15,6 +17,7 @@
 #include "core/io/file_format.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/util/file_error.hpp"
 #include "tests/temp_dir.hpp"
 
 using namespace amls;
@@ -562,13 +565,40 @@ TEST_CASE("bad XYZ files throw a message naming the file and the line") {
                        });
 }
 
+namespace {
+
+// The system's errno comes with the message, so that callers (the Python module) can say which file error it was.
+int file_error_of(const std::function<void()>& work) {
+  try {
+    work();
+  } catch (const FileError& e) {
+    return e.error();
+  }
+  return -1;
+}
+
+}  // namespace
+
 TEST_CASE("missing files and directories are named in the error") {
   TempDir dir;
   CHECK_THROWS_WITH_AS(read_point_set(dir.file("none.ply")), doctest::Contains("none.ply: cannot open"),
                        std::runtime_error);
+  CHECK(file_error_of([&] { read_point_set(dir.file("none.ply")); }) == ENOENT);
   fs::create_directory(dir.file("folder.xyz"));
   CHECK_THROWS_WITH_AS(read_point_set(dir.file("folder.xyz")), doctest::Contains("folder.xyz: is a directory"),
                        std::runtime_error);
+  CHECK(file_error_of([&] { read_point_set(dir.file("folder.xyz")); }) == EISDIR);
+  // A directory is named as one before its name's extension is judged.
+  fs::create_directory(dir.file("folder"));
+  CHECK(file_error_of([&] { read_point_set(dir.file("folder")); }) == EISDIR);
+  CHECK(file_error_of([&] { read_mesh(dir.file("folder")); }) == EISDIR);
+  PointSet<3> points;
+  points.positions = {Vec<3>(0, 0, 0), Vec<3>(1, 0, 0)};
+  points.normals = {Vec<3>::UnitZ(), Vec<3>::UnitZ()};
+  CHECK(file_error_of([&] {
+          write_point_set(dir.file("nowhere/s.ply"), points, PointFileFormat::ply_binary_little_endian);
+        }) == ENOENT);
+  CHECK(file_error_of([&] { write_point_set(dir.file("folder.xyz"), points, PointFileFormat::xyz); }) == EISDIR);
 }
 
 TEST_CASE("a failed write leaves the previous file intact and no temporary file behind") {

@@ -1,12 +1,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "core/run/scene.hpp"
 #include "core/run/scene_run.hpp"
+#include "core/util/file_error.hpp"
 #include "tests/scene_errors.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -65,12 +67,15 @@ TEST_CASE("scene: every 3D built-in shape and a file shape relative to the scene
   TempDir dir;
   write_text(dir.file("points.xyz"), "0 0 1 0 0 1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 -1 0 0 -1\n");
   write_text(dir.file("tetra.OFF"), "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
-  const std::string stages = R"("stages": [{"handles": [[0, 0, 1]], "targets": [{"steps": 1, "handles": [[0, 0, 1.1]]}]}])";
+  const std::string stages =
+      R"("stages": [{"handles": [[0, 0, 1]], "targets": [{"steps": 1, "handles": [[0, 0, 1.1]]}]}])";
   for (const std::string shape :
-       {R"({"type": "sphere", "radius": 0.5, "spacing": 0.1})", R"({"type": "torus", "major_radius": 1, "minor_radius": 0.3})",
-        R"({"type": "rounded_box", "half_extents": [1, 0.5, 0.5], "radius": 0.2})", R"({"type": "file", "path": "points.xyz"})",
-        R"({"type": "file", "path": "tetra.OFF"})"}) {
-    write_text(dir.file("s.json"), R"({"dimension": 3, "grid": {"spacing": 0.1}, "shape": )" + shape + ", " + stages + "}");
+       {R"({"type": "sphere", "radius": 0.5, "spacing": 0.1})",
+        R"({"type": "torus", "major_radius": 1, "minor_radius": 0.3})",
+        R"({"type": "rounded_box", "half_extents": [1, 0.5, 0.5], "radius": 0.2})",
+        R"({"type": "file", "path": "points.xyz"})", R"({"type": "file", "path": "tetra.OFF"})"}) {
+    write_text(dir.file("s.json"),
+               R"({"dimension": 3, "grid": {"spacing": 0.1}, "shape": )" + shape + ", " + stages + "}");
     const AnyScene any = read_scene(dir.file("s.json"));
     REQUIRE(std::holds_alternative<Scene<3>>(any));
     const SceneShapeSamples<3> samples = sample_scene_shape(std::get<Scene<3>>(any), 4.0);
@@ -82,51 +87,64 @@ TEST_CASE("scene: every 3D built-in shape and a file shape relative to the scene
 TEST_CASE("scene: bad scenes are rejected with a message naming the file and what is wrong") {
   TempDir dir;
   CHECK(error_of(edited("\"variant\"", "\"variants\""), dir) ==
-        dir.file("scene.json") + ": variants: unknown key (expected dimension, name, description, grid, shape, "
-                                 "radius_factor, widen_support, variant, deformation, regions or stages)");
+        dir.file("scene.json") +
+            ": variants: unknown key (expected dimension, name, description, grid, shape, "
+            "radius_factor, widen_support, variant, deformation, regions or stages)");
   CHECK(error_of(edited("\"widen_support\": true", "\"widen_support\": 1"), dir) ==
         dir.file("scene.json") + ": widen_support: expected true or false, got 1");
-  CHECK(error_of(edited("\"type\": \"circle\"", "\"type\": \"square\""), dir)
-            .find("shape.type: unknown shape 'square' (expected circle, ellipse, sphere, torus, rounded_box or file)") !=
-        std::string::npos);
-  CHECK(error_of(edited("\"radius\": 0.25", "\"radius\": \"big\""), dir).find("shape.radius: expected a number, got a string") !=
-        std::string::npos);
+  CHECK(
+      error_of(edited("\"type\": \"circle\"", "\"type\": \"square\""), dir)
+          .find("shape.type: unknown shape 'square' (expected circle, ellipse, sphere, torus, rounded_box or file)") !=
+      std::string::npos);
+  CHECK(error_of(edited("\"radius\": 0.25", "\"radius\": \"big\""), dir)
+            .find("shape.radius: expected a number, got a string") != std::string::npos);
   CHECK(error_of(edited("[[0.8, 0.6], [0.2, 0.5]]", "[[0.8, 0.6]]"), dir)
-            .find("stages[0].targets[1].handles: 1 handles, but the stage has 2 (adding or removing a handle starts a new stage)") !=
-        std::string::npos);
+            .find("stages[0].targets[1].handles: 1 handles, but the stage has 2 (adding or removing a handle starts a "
+                  "new stage)") != std::string::npos);
   CHECK(error_of(edited("[0.5, 0.8]", "[0.5, 0.8, 0]"), dir)
             .find("stages[1].targets[0].handles[0]: expected an array of 2 numbers") != std::string::npos);
-  CHECK(error_of(edited("\"steps\": 4", "\"steps\": 0"), dir).find("stages[1].targets[0].steps: must be within [1, 100000] (steps), got 0") !=
+  CHECK(error_of(edited("\"steps\": 4", "\"steps\": 0"), dir)
+            .find("stages[1].targets[0].steps: must be within [1, 100000] (steps), got 0") != std::string::npos);
+  CHECK(error_of(edited("\"steps\": 4", "\"steps\": 2.5"), dir)
+            .find("stages[1].targets[0].steps: expected a whole number") != std::string::npos);
+  CHECK(error_of(edited("\"alpha\": 1.5", "\"alpha\": NaN"), dir).find("scene.json: not valid JSON") !=
         std::string::npos);
-  CHECK(error_of(edited("\"steps\": 4", "\"steps\": 2.5"), dir).find("stages[1].targets[0].steps: expected a whole number") !=
-        std::string::npos);
-  CHECK(error_of(edited("\"alpha\": 1.5", "\"alpha\": NaN"), dir).find("scene.json: not valid JSON") != std::string::npos);
-  CHECK(error_of(edited("\"alpha\": 1.5", "\"alpha\": 1e999"), dir).find("not valid JSON: [json.exception.out_of_range.406] number overflow parsing '1e999'") !=
+  CHECK(error_of(edited("\"alpha\": 1.5", "\"alpha\": 1e999"), dir)
+            .find("not valid JSON: [json.exception.out_of_range.406] number overflow parsing '1e999'") !=
         std::string::npos);
   CHECK(error_of(edited("\"kind\": \"similarity\"", "\"kind\": \"bendy\""), dir)
-            .find("deformation.kind: unknown deformation kind 'bendy' (expected affine, similarity or rigid)") != std::string::npos);
+            .find("deformation.kind: unknown deformation kind 'bendy' (expected affine, similarity or rigid)") !=
+        std::string::npos);
   CHECK(error_of(edited("\"type\": \"circle\"", "\"type\": \"sphere\""), dir)
             .find("shape.type: a sphere is a 3D shape, but the scene's dimension is 2") != std::string::npos);
   CHECK(error_of(edited("{\"cells\": 64}", "{\"cells\": 64, \"spacing\": 0.1}"), dir).find("grid: give exactly one") !=
         std::string::npos);
-  CHECK(error_of(edited("\"dimension\": 2", "\"dimension\": 4"), dir).find("dimension: must be within [2, 3] (the dimension), got 4") != std::string::npos);
-  CHECK(error_of(edited("\"shape\": {\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100},", ""), dir)
+  CHECK(error_of(edited("\"dimension\": 2", "\"dimension\": 4"), dir)
+            .find("dimension: must be within [2, 3] (the dimension), got 4") != std::string::npos);
+  CHECK(error_of(
+            edited("\"shape\": {\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100},", ""),
+            dir)
             .find("missing the required key 'shape'") != std::string::npos);
   CHECK(error_of(edited("{\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100}",
                         "{\"type\": \"file\", \"path\": \"nowhere.ply\"}"),
                  dir)
             .find("shape.path: no such file: " + dir.file("nowhere.ply")) != std::string::npos);
-  CHECK_THROWS_WITH_AS(read_scene(dir.file("missing.json")), doctest::Contains("missing.json: cannot open the scene file"),
-                       std::runtime_error);
+  CHECK_THROWS_WITH_AS(read_scene(dir.file("missing.json")),
+                       doctest::Contains("missing.json: cannot open the scene file"), FileError);
+  std::filesystem::create_directory(dir.file("folder.json"));
+  CHECK_THROWS_WITH_AS(read_scene(dir.file("folder.json")), doctest::Contains("folder.json: is a directory"),
+                       FileError);
 }
 
 TEST_CASE("scene: a shape file with no points is named when the shape is sampled") {
   TempDir dir;
   write_text(dir.file("empty.xyz"), "# amls dim 2\n");
-  write_text(dir.file("s.json"), edited("{\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100}",
-                                        "{\"type\": \"file\", \"path\": \"empty.xyz\"}"));
+  write_text(dir.file("s.json"),
+             edited("{\"type\": \"circle\", \"center\": [0.5, 0.5], \"radius\": 0.25, \"points\": 100}",
+                    "{\"type\": \"file\", \"path\": \"empty.xyz\"}"));
   const Scene<2> scene = std::get<Scene<2>>(read_scene(dir.file("s.json")));
-  CHECK_THROWS_WITH_AS(sample_scene_shape(scene, 1.0), doctest::Contains("empty.xyz: holds no points"), std::runtime_error);
+  CHECK_THROWS_WITH_AS(sample_scene_shape(scene, 1.0), doctest::Contains("empty.xyz: holds no points"),
+                       std::runtime_error);
 }
 
 TEST_CASE("scene: a file shape without a grid takes h from the file's points; other shapes need a grid") {
@@ -139,7 +157,8 @@ TEST_CASE("scene: a file shape without a grid takes h from the file's points; ot
               " " + std::to_string(std::sin(a)) + " 0\n";
   }
   write_text(dir.file("circle.xyz"), points);
-  write_text(dir.file("scene.json"), R"({"dimension": 2, "shape": {"type": "file", "path": "circle.xyz"})"
+  write_text(dir.file("scene.json"),
+             R"({"dimension": 2, "shape": {"type": "file", "path": "circle.xyz"})"
              R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})");
   const AnyScene any = read_scene(dir.file("scene.json"));
   const Scene<2>& s = std::get<Scene<2>>(any);
@@ -147,10 +166,12 @@ TEST_CASE("scene: a file shape without a grid takes h from the file's points; ot
   CHECK(s.h() == doctest::Approx(2.0 * 3.141592653589793 / 200).epsilon(1e-3));
 
   CHECK(error_of(R"({"dimension": 2, "shape": {"type": "circle"})"
-                 R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})", dir)
+                 R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})",
+                 dir)
             .find("missing the required key 'grid' (only a file shape may leave it out") != std::string::npos);
   write_text(dir.file("two.xyz"), "0 0 0 1 0 0\n1 0 0 1 0 0\n");
   CHECK(error_of(R"({"dimension": 2, "shape": {"type": "file", "path": "two.xyz"})"
-                 R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})", dir)
+                 R"(, "stages": [{"handles": [[1, 0]], "targets": [{"steps": 1, "handles": [[1.1, 0]]}]}]})",
+                 dir)
             .find("shape.path: no 'grid' given, and h cannot be measured on the file") != std::string::npos);
 }

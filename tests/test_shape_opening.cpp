@@ -83,12 +83,12 @@ TEST_CASE("opening a file: a given spacing wins, a recorded one comes next, and 
   CHECK(given.source.find("with normals") != std::string::npos);
   options.resampling.spacing = 1e-6;
   CHECK_THROWS_WITH_AS(open_shape_file(path, options, pool), doctest::Contains("s.ply: h = 1e-06 would give about"),
-                       std::runtime_error);
+                       std::invalid_argument);
   options.resampling.spacing = 0.0;
   write_point_set(dir.file("few.xyz"), sample_sphere(Vec<3>::Zero(), 1.0, 4), PointFileFormat::xyz);
   CHECK_THROWS_WITH_AS(open_shape_file(dir.file("few.xyz"), options, pool),
                        doctest::Contains("few.xyz: cannot choose h: measuring the spacing needs more than 4 points"),
-                       std::runtime_error);
+                       std::invalid_argument);
 }
 
 TEST_CASE("opening a file stops when the pool's check says so") {

@@ -208,6 +208,22 @@ TEST_CASE("extract_mesh: a surface through grid vertices leaves no vertices in o
         2);
 }
 
+TEST_CASE("extract_mesh: vertices lie on a lattice of h / 2^20 from the grid's origin") {
+  // So that a face parallel to a grid plane is exactly flat: its vertices' roots, a few units of the
+  // last place apart, round to one number (Open3D took the nearly coplanar triangles of CGAL's
+  // fandisk_large.off for crossing ones).
+  const double h = 1.0 / 48;
+  const SurfaceMesh<3> mesh =
+      mesh_of(sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, sphere_points_for_spacing(0.3, h)), h, Variant::exact).mesh;
+  const double step = h / (1 << 20);
+  std::size_t off_lattice = 0;
+  for (const Vec<3>& v : mesh.vertices)
+    for (int k = 0; k < 3; ++k)
+      off_lattice += static_cast<std::size_t>(std::abs(v[k] / step - std::round(v[k] / step)) > 1e-6);
+  CHECK(mesh.vertices.size() > 1000);
+  CHECK(off_lattice == 0);
+}
+
 TEST_CASE("extract_mesh: a circle's polyline is closed, counter-clockwise, and as long as the circle") {
   const Vec<2> center(0.5, 0.5);
   const double r = 0.2, h = 1.0 / 128;

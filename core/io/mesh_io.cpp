@@ -1,9 +1,7 @@
 #include "core/io/mesh_io.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -11,6 +9,7 @@
 
 #include "core/io/file_format.hpp"
 #include "core/io/raw_point_file.hpp"
+#include "core/util/file_error.hpp"
 
 namespace amls {
 
@@ -22,10 +21,9 @@ using detail::fail;
 constexpr std::size_t kMaxLine = std::size_t{1} << 20;
 
 std::ifstream open_binary(const std::string& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) fail(path, "is a directory, not a mesh file");
+  reject_directory(path, "mesh file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  if (!in) throw_cannot_open(path, "cannot open");
   return in;
 }
 
@@ -80,6 +78,7 @@ TriangleMesh read_obj(std::istream& in, const std::string& path) {
 }  // namespace
 
 TriangleMesh read_mesh(const std::string& path) {
+  reject_directory(path, "mesh file");
   const std::optional<ShapeFileFormat> format = shape_file_format(path);
   if (!format || *format == ShapeFileFormat::xyz)
     throw std::invalid_argument(path + ": unknown mesh file extension '" + lower_extension(path) +

@@ -14,6 +14,7 @@
 #include "core/io/file_format.hpp"
 #include "core/io/point_set_repair.hpp"
 #include "core/io/raw_point_file.hpp"
+#include "core/util/file_error.hpp"
 
 namespace amls {
 
@@ -83,18 +84,22 @@ void write_atomically(const std::string& path, WriteBody&& write_body) {
     if (!file && error != EEXIST) break;
   }
   if (!file)
-    throw std::runtime_error(path + ": cannot create a temporary file in " + directory.string() + ": " +
-                             std::strerror(error));
+    throw FileError(path + ": cannot create a temporary file in " + directory.string() + ": " + std::strerror(error),
+                    error);
   try {
     detail::FileSink sink(file, path);
     write_body(sink);
     sink.flush();
     const int closed = std::fclose(file);
     file = nullptr;
-    if (closed != 0) throw std::runtime_error(path + ": write failed: " + std::strerror(errno));
+    if (closed != 0) {
+      const int close_error = errno;
+      throw FileError(path + ": write failed: " + std::strerror(close_error), close_error);
+    }
     std::error_code rename_error;
     fs::rename(temporary, target, rename_error);
-    if (rename_error) throw std::runtime_error(path + ": cannot replace the file: " + rename_error.message());
+    if (rename_error)
+      throw FileError(path + ": cannot replace the file: " + rename_error.message(), rename_error.value());
   } catch (...) {
     if (file) std::fclose(file);
     std::error_code ignored;
@@ -146,6 +151,7 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
   if (dimension_override != 0 && dimension_override != 2 && dimension_override != 3)
     throw std::invalid_argument("dimension must be 2 or 3 (or 0 to read it from the file), got " +
                                 std::to_string(dimension_override));
+  reject_directory(path, "point-set file");
   const std::optional<ShapeFileFormat> format = shape_file_format(path);
   if (!format || *format == ShapeFileFormat::obj) {
     const std::string extension = lower_extension(path);
@@ -154,10 +160,9 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
                                                    : "unknown point-set file extension '" + extension + "'") +
                                 " (expected " + kPointSetFileExtensions + ")");
   }
-  std::error_code error;
-  if (fs::is_directory(path, error)) fail(path, "is a directory, not a point-set file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  if (!in) throw_cannot_open(path, "cannot open");
+  std::error_code error;
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) fail(path, "cannot tell its size: " + error.message());
   if (size == 0) fail(path, "the file is empty");

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/util/file_error.hpp"
+
 namespace amls::detail {
 
 std::string RawPointFile::where(std::size_t i) const {
@@ -151,7 +153,7 @@ void FileSink::flush() {
   errno = 0;
   if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
     const int error = errno;
-    throw std::runtime_error(path_ + ": write failed" + (error ? std::string(": ") + std::strerror(error) : ""));
+    throw FileError(path_ + ": write failed" + (error ? std::string(": ") + std::strerror(error) : ""), error);
   }
   buffer_.clear();
 }

@@ -24,6 +24,16 @@ constexpr int kCubeCorners = 1 << D;
 // facets lie up to about 1e-2 h inside the sphere).
 constexpr double kEndMargin = 1e-3;
 
+// Mesh vertices are rounded to multiples of h / 2^20 from the grid's origin,
+// moving them by at most 1e-6 h. Where a flat face of the surface is parallel
+// to a grid plane (a CAD model's base), its vertices' roots differ in the last
+// bits, so the face is flat only to about 1e-17; other programs' triangle
+// tests then misjudge nearly coplanar neighbours (Open3D's, with its 1e-6
+// tolerance on the scaled distances, finds hundreds of "crossing" pairs on
+// CGAL's fandisk_large.off). Rounded, the face's vertices share one exact
+// coordinate, and the face is exactly flat.
+constexpr double kVertexLattice = 1.0 / (1 << 20);
+
 // A simplex of Kuhn's triangulation of the unit cube: its corners (as cube
 // corners, each one axis beyond the last) and the sign of its orientation,
 // det(c1 - c0, ..., cD - c0), which is the sign of its axis permutation.
@@ -108,6 +118,7 @@ class MeshBuilder {
     locate_vertices(variant, pool);
     // Where F is nearly zero at a grid vertex, the vertices beside it are merged (sliver_collapse.hpp).
     if constexpr (D == 3) out_.stats.collapsed_vertices = collapse_slivers(out_.mesh, grid);
+    round_to_lattice(grid);
     return std::move(out_);
   }
 
@@ -283,6 +294,12 @@ class MeshBuilder {
       }
     });
     for (const auto& f : fallbacks) out_.stats.root_fallbacks += f.value;
+  }
+
+  void round_to_lattice(const Grid<D>& grid) {
+    const double step = kVertexLattice * grid.spacing();
+    for (Vec<D>& v : out_.mesh.vertices)
+      v = grid.origin() + step * ((v - grid.origin()) / step).array().round().matrix();
   }
 
   const AmlsSurface<D>& surface_;

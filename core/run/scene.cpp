@@ -1,22 +1,21 @@
 #include "core/run/scene.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/geometry/sample_spacing.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/io/file_format.hpp"
 #include "core/io/mesh_io.hpp"
-#include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/io/surface_samples.hpp"
+#include "core/util/file_error.hpp"
 #include "core/util/parameter_ranges.hpp"
 
 namespace amls {
@@ -26,9 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr std::initializer_list<ShapeType> kShapeTypes = {ShapeType::circle, ShapeType::ellipse,
-                                                          ShapeType::sphere, ShapeType::torus,
-                                                          ShapeType::rounded_box, ShapeType::file};
+constexpr std::initializer_list<ShapeType> kShapeTypes = {ShapeType::circle, ShapeType::ellipse,     ShapeType::sphere,
+                                                          ShapeType::torus,  ShapeType::rounded_box, ShapeType::file};
 
 // Where a value stands in the scene file, for messages: `stages[1].targets[0]`.
 class Place {
@@ -196,13 +194,15 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
   auto read_points = [&](double least) {
     if (const json* v = r.find("points")) {
       if (shape.spacing > 0.0) at.key("points").fail("give either 'points' or 'spacing', not both");
-      shape.points = as_count(*v, at.key("points"), ParameterRange{least, ranges::kPoints.max, ranges::kPoints.meaning});
+      shape.points =
+          as_count(*v, at.key("points"), ParameterRange{least, ranges::kPoints.max, ranges::kPoints.meaning});
     }
   };
   auto positive_vec = [&](const char* key) {
     const Vec<D> v = as_vec<D>(r.require(key), at.key(key));
     for (int a = 0; a < D; ++a)
-      if (!(v[a] > 0.0)) at.key(key).index(static_cast<std::size_t>(a)).fail("must be positive, got " + format_number(v[a]));
+      if (!(v[a] > 0.0))
+        at.key(key).index(static_cast<std::size_t>(a)).fail("must be positive, got " + format_number(v[a]));
     return v;
   };
   switch (shape.type) {
@@ -236,9 +236,8 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
       shape.file = as_string(r.require("path"), path_at);
       if (shape.file.empty()) path_at.fail("empty file name");
       const fs::path base = fs::path(scene_path).parent_path();
-      shape.resolved_file = (fs::path(shape.file).is_absolute() ? fs::path(shape.file) : base / shape.file)
-                                .lexically_normal()
-                                .string();
+      shape.resolved_file =
+          (fs::path(shape.file).is_absolute() ? fs::path(shape.file) : base / shape.file).lexically_normal().string();
       if (!shape_file_format(shape.file))
         path_at.fail("unknown file type '" + lower_extension(shape.file) + "' (expected " + kShapeFileExtensions + ")");
       std::error_code error;
@@ -266,8 +265,10 @@ double shape_measure(const SceneShape<D>& s) {
       return 4.0 * pi * pi * s.major_radius * s.minor_radius;
     case ShapeType::rounded_box: {
       const Vec<D> e = s.half_extents;
-      if constexpr (D == 2) return 4.0 * (e[0] + e[1]);
-      else return 8.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
+      if constexpr (D == 2)
+        return 4.0 * (e[0] + e[1]);
+      else
+        return 8.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
     }
     case ShapeType::file:
       break;
@@ -282,12 +283,12 @@ template <int D>
 void check_point_estimate(const Scene<D>& scene, const Place& at) {
   const double measure = shape_measure(scene.shape);
   const double initial = scene.shape.points > 0 ? static_cast<double>(scene.shape.points)
-                                                 : measure / std::pow(scene.sample_spacing(), D - 1);
+                                                : measure / std::pow(scene.sample_spacing(), D - 1);
   const double resampled = measure / std::pow(scene.h(), D - 1);
   const double estimate = std::max(initial, resampled);
   if (estimate <= ranges::kPoints.max) return;
-  const double fitting = std::max(scene.sample_spacing(), scene.h()) *
-                         std::pow(estimate / ranges::kPoints.max, 1.0 / (D - 1));
+  const double fitting =
+      std::max(scene.sample_spacing(), scene.h()) * std::pow(estimate / ranges::kPoints.max, 1.0 / (D - 1));
   at.fail("sampling this " + std::string(to_string(scene.shape.type)) + " at spacing " +
           format_number(scene.sample_spacing()) + " and resampling it at h = " + format_number(scene.h()) +
           " makes about " + format_number(estimate) + " points, more than " + format_number(ranges::kPoints.max) +
@@ -302,8 +303,10 @@ RegionMotion<D> parse_motion(const json& j, const Place& at) {
   RegionMotion<D> motion;
   if (const json* v = r.find("translation")) motion.translation = as_vec<D>(*v, at.key("translation"));
   if (const json* v = r.find("rotation")) {
-    if constexpr (D == 2) motion.rotation[0] = as_number(*v, at.key("rotation"));
-    else motion.rotation = as_vec<3>(*v, at.key("rotation"));
+    if constexpr (D == 2)
+      motion.rotation[0] = as_number(*v, at.key("rotation"));
+    else
+      motion.rotation = as_vec<3>(*v, at.key("rotation"));
   }
   if (const json* v = r.find("scale")) motion.scale = as_in_range(*v, at.key("scale"), ranges::kRegionScale);
   r.finish();
@@ -368,7 +371,8 @@ DeformationHistory<D> parse_stages(const json& j, const Place& at,
     const Place stage_at = at.index(s);
     ObjectReader stage(j[s], stage_at);
     std::vector<RegionHandle<D>> stage_regions;
-    if (const json* v = stage.find("regions")) stage_regions = parse_stage_regions<D>(*v, stage_at.key("regions"), regions);
+    if (const json* v = stage.find("regions"))
+      stage_regions = parse_stage_regions<D>(*v, stage_at.key("regions"), regions);
     history.begin_stage(as_points<D>(stage.require("handles"), stage_at.key("handles")), stage_regions);
     const std::size_t handles = history.stages.back().start.size();
     // A stage moved by regions alone may have no point handle.
@@ -439,7 +443,8 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
     ObjectReader grid(*grid_json, grid_at);
     const json* cells = grid.find("cells");
     const json* spacing = grid.find("spacing");
-    if ((cells == nullptr) == (spacing == nullptr)) grid_at.fail("give exactly one of 'cells' (h = 1/cells) or 'spacing' (h)");
+    if ((cells == nullptr) == (spacing == nullptr))
+      grid_at.fail("give exactly one of 'cells' (h = 1/cells) or 'spacing' (h)");
     if (cells) scene.grid_cells = static_cast<int>(as_count(*cells, grid_at.key("cells"), ranges::kGridCells));
     if (spacing) scene.grid_spacing = as_in_range(*spacing, grid_at.key("spacing"), ranges::kSpacing);
     grid.finish();
@@ -472,7 +477,8 @@ Scene<D> parse_scene(const json& j, const std::string& path) {
         at.key("kind").fail(e.what());
       }
     }
-    if (const json* alpha = deformation.find("alpha")) scene.alpha = as_in_range(*alpha, at.key("alpha"), ranges::kAlpha);
+    if (const json* alpha = deformation.find("alpha"))
+      scene.alpha = as_in_range(*alpha, at.key("alpha"), ranges::kAlpha);
     deformation.finish();
   }
   std::vector<std::shared_ptr<const PointRegion<D>>> regions;
@@ -509,8 +515,10 @@ json motion_json(const RegionMotion<D>& motion) {
   json out = json::object();
   if (!motion.translation.isZero(0.0)) out["translation"] = vec_json<D>(motion.translation);
   if (!motion.rotation.isZero(0.0)) {
-    if constexpr (D == 2) out["rotation"] = motion.rotation[0];
-    else out["rotation"] = vec_json<3>(motion.rotation);
+    if constexpr (D == 2)
+      out["rotation"] = motion.rotation[0];
+    else
+      out["rotation"] = vec_json<3>(motion.rotation);
   }
   if (motion.scale != 1.0) out["scale"] = motion.scale;
   return out;
@@ -548,10 +556,9 @@ AnyScene scene_from_json(const json& j, const std::string& path) {
 }
 
 AnyScene read_scene(const std::string& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) throw std::runtime_error(path + ": is a directory, not a scene file");
+  reject_directory(path, "scene file");
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the scene file: " + std::strerror(errno));
+  if (!in) throw_cannot_open(path, "cannot open the scene file");
   json j;
   try {
     j = json::parse(in);

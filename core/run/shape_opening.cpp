@@ -20,13 +20,13 @@ SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& g
   try {
     choice = choose_spacing(positions, options);
   } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
+    throw std::invalid_argument(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
   }
   if (positions.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
     try {
       check_resampling_cost(D, sampled_extent(positions), choice.h, options);
     } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(input.path + ": " + e.what());
+      throw std::invalid_argument(input.path + ": " + e.what());
     }
   }
   return choice;
@@ -49,7 +49,8 @@ OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPo
   out.file_points = input.positions().size();
   out.dimension = input.dimension();
   step("choosing h", 1);
-  out.spacing = out.dimension == 2 ? spacing_for<2>(input, options.resampling) : spacing_for<3>(input, options.resampling);
+  out.spacing =
+      out.dimension == 2 ? spacing_for<2>(input, options.resampling) : spacing_for<3>(input, options.resampling);
   const bool estimating = !input.is_mesh && !input.point_set.has_normals;
   step(input.is_mesh ? "sampling the mesh" : estimating ? "estimating normals" : "checking the normals", 2);
   SurfaceSampleOptions sampling;

@@ -47,9 +47,10 @@ struct OpenedShape {
 inline constexpr int kShapeOpeningSteps = 3;
 
 // Throws std::runtime_error naming the file for one that cannot be read or
-// holds no points, for no h (too few distinct points: "give --spacing or
-// --grid"), a resampling at h past the cost limits, or normals that cannot be
-// estimated; Cancelled when `pool`'s cancel check says stop (before each step,
+// holds no points (FileError where the system refused it) or normals that
+// cannot be estimated; std::invalid_argument naming it for no h (too few
+// distinct points: "give --spacing or --grid") or a resampling at h past the
+// cost limits (values out of range); Cancelled when `pool`'s cancel check says stop (before each step,
 // and inside the normal estimation).
 OpenedShape open_shape_file(const std::string& path, const ShapeOpening& options, ThreadPool& pool);
 

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/util/file_error.hpp"
+
 namespace amls {
 
 namespace {
@@ -33,7 +35,7 @@ StagedDirectory::StagedDirectory(std::string path, std::string marker)
   fs::remove_all(staging_, error);
   if (error) throw std::runtime_error(staging_ + ": cannot remove what an earlier run left: " + error.message());
   fs::create_directories(staging_, error);
-  if (error) throw std::runtime_error(staging_ + ": cannot create the directory: " + error.message());
+  if (error) throw FileError(staging_ + ": cannot create the directory: " + error.message(), error.value());
 }
 
 std::string StagedDirectory::file(const std::string& name) const { return (fs::path(staging_) / name).string(); }

@@ -8,6 +8,8 @@ each cell its box touches, the vertex array shared, so pairs are judged exactly 
 mesh), finds the same crossing pairs in seconds. tests/test_open3d_interop.py checks that the two
 agree on a mesh small enough for the whole test.
 """
+from fractions import Fraction
+
 import numpy as np
 import open3d as o3d
 
@@ -53,3 +55,25 @@ def crossing_pairs(mesh, triangles_per_cell=400):
 def is_watertight(mesh):
     """Open3D's is_watertight(), with the self-intersection test done cell by cell."""
     return mesh.is_edge_manifold(allow_boundary_edges=False) and mesh.is_vertex_manifold() and not crossing_pairs(mesh)
+
+
+def _orientation(a, b, c, d):
+    """The sign of det(b - a, c - a, d - a), exactly (the doubles as fractions)."""
+    a, b, c, d = ([Fraction(float(x)) for x in point] for point in (a, b, c, d))
+    u, v, w = ([q[i] - a[i] for i in range(3)] for q in (b, c, d))
+    det = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+           + u[2] * (v[0] * w[1] - v[1] * w[0]))
+    return (det > 0) - (det < 0)
+
+
+def apart_exactly(mesh, pair):
+    """Whether exact arithmetic proves a pair of triangles apart: one lies strictly on one side of the
+    other's plane. Open3D's test has a tolerance of 1e-6 on scaled distances, so nearly coplanar
+    triangles (a flat face) can be reported crossing when they are not."""
+    vertices, triangles = np.asarray(mesh.vertices), np.asarray(mesh.triangles)
+    first, second = vertices[triangles[pair[0]]], vertices[triangles[pair[1]]]
+    for plane, other in ((first, second), (second, first)):
+        sides = {_orientation(*plane, point) for point in other}
+        if sides in ({1}, {-1}):
+            return True
+    return False

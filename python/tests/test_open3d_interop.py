@@ -8,7 +8,7 @@ import pytest
 from conftest import cgal_file, run_cli, sphere
 
 o3d = pytest.importorskip("open3d")
-from open3d_watertight import crossing_pairs, is_watertight  # noqa: E402 (after the import check)
+from open3d_watertight import apart_exactly, crossing_pairs, is_watertight  # noqa: E402 (after the import check)
 
 
 @pytest.mark.parametrize("extension", [".ply", ".xyz"])
@@ -68,6 +68,7 @@ def test_the_cell_by_cell_check_finds_what_open3d_finds(tmp_path):
     whole = sorted(tuple(sorted(map(int, p))) for p in np.asarray(mesh.get_self_intersecting_triangles()))
     assert len(whole) > 0
     assert crossing_pairs(mesh, triangles_per_cell=50) == whole
+    assert not any(apart_exactly(mesh, pair) for pair in whole)  # they do cross
     assert not is_watertight(mesh)
     single = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(vertices[0]), o3d.utility.Vector3iVector(faces[0]))
     assert is_watertight(single) == single.is_watertight() == True  # noqa: E712
@@ -81,3 +82,18 @@ def test_real_scans_and_meshes_give_watertight_meshes(tmp_path, relative):
     mesh = watertight(tmp_path / "m.ply")
     assert mesh.is_edge_manifold(allow_boundary_edges=False) and mesh.is_vertex_manifold()
     assert crossing_pairs(mesh) == []
+
+
+def test_exact_arithmetic_tells_nearly_coplanar_triangles_apart():
+    # A triangle 1e-12 above or below another's plane, over it: apart, though only exactly so; tilted
+    # through that plane, it crosses the first.
+    first = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+    for lift in (1e-12, -1e-12):
+        second = [[0.2, 0.2, lift], [0.6, 0.2, lift], [0.2, 0.6, lift]]
+        mesh = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(np.array(first + second)),
+                                         o3d.utility.Vector3iVector(np.array([[0, 1, 2], [3, 4, 5]])))
+        assert apart_exactly(mesh, (0, 1))
+    through = [[0.2, 0.2, -0.1], [0.6, 0.2, 0.1], [0.2, 0.6, 0.1]]
+    mesh = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(np.array(first + through)),
+                                     o3d.utility.Vector3iVector(np.array([[0, 1, 2], [3, 4, 5]])))
+    assert not apart_exactly(mesh, (0, 1))
