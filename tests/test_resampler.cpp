@@ -60,6 +60,33 @@ bool lexicographic_less(const Vec<2>& a, const Vec<2>& b) { return a[0] < b[0] |
 
 }  // namespace
 
+TEST_CASE("a sign change that is a jump of F, not a zero, is located as a jump") {
+  // F as the orientation filter makes it between two sheets' fits: -0.4 h on
+  // one side of where the nearest point switches sheets, +0.6 h on the other.
+  const double h = 0.01;
+  const Vec<2> start(0.0, 0.0);
+  const Vec<2> step(h, 0.0);
+  auto value_at = [&](double x, bool smooth) {
+    Evaluation<2> e;
+    e.defined = true;
+    e.value = smooth ? x - 0.37 * h : (x < 0.37 * h ? -0.4 * h : 0.6 * h);
+    e.gradient = smooth ? Vec<2>(1.0, 0.0) : Vec<2>::Zero();
+    e.mean_normal = Vec<2>(1.0, 0.0);
+    return e;
+  };
+  for (const bool smooth : {false, true}) {
+    auto evaluate = [&](const Vec<2>& y) { return value_at(y[0], smooth); };
+    const Evaluation<2> f0 = value_at(0.0, smooth);
+    const Evaluation<2> f1 = value_at(h, smooth);
+    const SegmentRoot<2> root =
+        locate_segment_root<2>(evaluate, start, step, f0, f1, estimate_segment_root<2>(f0, f1, step), 0);
+    CHECK(root.jump == !smooth);
+    // A jump is given as its bracket's nearer end when recognised: within a
+    // hundredth of the edge (core/math/root_finding.hpp's kJumpFactor).
+    CHECK(std::abs(root.t - 0.37) < (smooth ? 1e-9 : 1e-2));
+  }
+}
+
 TEST_CASE("locating only the crossings that may win HAVECLOSEPOINT keeps what locating every crossing keeps") {
   // The resampler judges losers on the root finder's first guesses; off-circle
   // shapes make those guesses inexact, so a wrong judgement would show.

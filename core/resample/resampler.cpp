@@ -231,6 +231,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
   const double h = grid.spacing();
   std::vector<std::size_t> evaluations(static_cast<std::size_t>(pool.threads()), 0);
   std::vector<std::size_t> fallbacks(evaluations.size(), 0);
+  std::vector<std::size_t> jumps(evaluations.size(), 0);
 
   // Each crossing's root finding reads every point within Delta of its edge,
   // i.e. within Delta + h/2 of the edge's midpoint (with widened supports:
@@ -246,6 +247,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
     // Counted locally and added once: the blocks' counters share a cache line.
     std::size_t block_evaluations = 0;
     std::size_t block_fallbacks = 0;
+    std::size_t block_jumps = 0;
     Neighbourhood<D> candidates;
     std::size_t candidates_brick = std::numeric_limits<std::size_t>::max();
     Vec<D> candidates_centre = Vec<D>::Zero();
@@ -271,19 +273,27 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
                                       direction, f0, f1, x.t, x.axis);
         block_evaluations += static_cast<std::size_t>(root.evaluations);
         block_fallbacks += root.fallback ? 1 : 0;
+        block_jumps += root.jump ? 1 : 0;
       } else {
         root = interpolate_segment_root(f0, f1, x.axis);
       }
-      x.t = root.t;
+      // A jump is marked by a t outside the edge, for the cut below.
+      x.t = root.jump ? kJumpMark : root.t;
       x.normal = root.normal;
     }
     evaluations[static_cast<std::size_t>(block)] += block_evaluations;
     fallbacks[static_cast<std::size_t>(block)] += block_fallbacks;
+    jumps[static_cast<std::size_t>(block)] += block_jumps;
   });
+  std::size_t jumped = 0;
   for (std::size_t b = 0; b < evaluations.size(); ++b) {
     stats_.root_evaluations += evaluations[b];
     stats_.root_fallbacks += fallbacks[b];
+    jumped += jumps[b];
   }
+  stats_.jumps = jumped;
+  if (jumped > 0)
+    keep_in_order(crossings_, crossings_scratch_, [](const Crossing& x, std::size_t) { return x.t != kJumpMark; }, pool);
 }
 
 template <int D>
