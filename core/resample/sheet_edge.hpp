@@ -5,8 +5,12 @@
 // there moves the edge outward by a row at every resample. Such an edge is
 // not found as a rim when the sheet curls back within the rim test's bridge.
 // This is the test on the new point itself: it lies past the old points'
-// edge when no old point is within h of it and those within kSheetEdgeReach
-// all lie to one side of it in its tangent plane.
+// edge when the sheet's other side is within reach (an old point whose
+// normal opposes its own), no old point is within h of it, and those within
+// kSheetEdgeReach all lie to one side of it in its tangent plane. (Without
+// the other side, a new point far from old ones is where a sparse input is
+// resampled finely, not an edge.)
+#include <algorithm>
 #include <cmath>
 
 #include "core/surface/amls_surface.hpp"
@@ -20,10 +24,18 @@ inline constexpr double kSheetEdgeReach = 2.5;
 // around give about 0).
 inline constexpr double kSheetEdgeOneSided = 0.6;
 
-// Whether y, with unit normal `normal`, lies past the edge of the points in
-// `neighbourhood` (which must hold every point within kSheetEdgeReach h of y).
+// An old point whose normal turns more than 60 degrees from the new point's
+// belongs to the sheet's other side or to its curled edge.
+inline constexpr double kSheetOtherSide = 0.5;
+
+// Whether y, with unit normal `normal`, lies past the edge of a sheet whose
+// points are in `neighbourhood` (which must hold every point within
+// kSheetEdgeReach h of y).
 template <int D>
 bool beyond_sheet_edge(const Neighbourhood<D>& neighbourhood, const Vec<D>& y, const Vec<D>& normal, double h) {
+  const bool two_sided = std::any_of(neighbourhood.normals.begin(), neighbourhood.normals.end(),
+                                     [&](const Vec<D>& n) { return n.dot(normal) < kSheetOtherSide; });
+  if (!two_sided) return false;
   const double near2 = h * h;
   const double reach2 = kSheetEdgeReach * kSheetEdgeReach * h * h;
   Vec<D> directions = Vec<D>::Zero();
