@@ -8,6 +8,7 @@
 
 #include "core/resample/resampler.hpp"
 #include "core/resample/segment_root.hpp"
+#include "core/resample/sheet_edge.hpp"
 #include "core/geometry/shapes.hpp"
 #include "resampling_checks.hpp"
 #include "surface_fixtures.hpp"
@@ -59,6 +60,56 @@ std::vector<Vec<2>> nearest_crossings_by_brute_force(const AmlsSurface<2>& surfa
 bool lexicographic_less(const Vec<2>& a, const Vec<2>& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); }
 
 }  // namespace
+
+TEST_CASE("a sign change that is a jump of F, not a zero, is located as a jump") {
+  // F as the orientation filter makes it between two sheets' fits: -0.4 h on
+  // one side of where the nearest point switches sheets, +0.6 h on the other.
+  const double h = 0.01;
+  const Vec<2> start(0.0, 0.0);
+  const Vec<2> step(h, 0.0);
+  auto value_at = [&](double x, bool smooth) {
+    Evaluation<2> e;
+    e.defined = true;
+    e.value = smooth ? x - 0.37 * h : (x < 0.37 * h ? -0.4 * h : 0.6 * h);
+    e.gradient = smooth ? Vec<2>(1.0, 0.0) : Vec<2>::Zero();
+    e.mean_normal = Vec<2>(1.0, 0.0);
+    return e;
+  };
+  for (const bool smooth : {false, true}) {
+    auto evaluate = [&](const Vec<2>& y) { return value_at(y[0], smooth); };
+    const Evaluation<2> f0 = value_at(0.0, smooth);
+    const Evaluation<2> f1 = value_at(h, smooth);
+    const SegmentRoot<2> root =
+        locate_segment_root<2>(evaluate, start, step, f0, f1, estimate_segment_root<2>(f0, f1, step), 0);
+    CHECK(root.jump == !smooth);
+    // A jump is given as its bracket's nearer end when recognised: within a
+    // hundredth of the edge (core/math/root_finding.hpp's kJumpFactor).
+    CHECK(std::abs(root.t - 0.37) < (smooth ? 1e-9 : 1e-2));
+  }
+}
+
+TEST_CASE("a new point is past a sheet's edge only where the old points all lie to one side and none within h") {
+  // A sheet in the plane z = 0 ending at x = 0, sampled every h, and its
+  // other side (normals down) 0.4 h below: a point a row and a half past
+  // the edge, inside and at the edge.
+  const double h = 0.01;
+  Neighbourhood<3> sheet;
+  for (int i = -6; i <= 0; ++i)
+    for (int j = -6; j <= 6; ++j)
+      for (const double z : {0.0, -0.4 * h}) {
+        sheet.positions.push_back(Vec<3>(i * h, j * h, z));
+        sheet.normals.push_back(z == 0.0 ? Vec<3>::UnitZ() : Vec<3>(-Vec<3>::UnitZ()));
+      }
+  const Vec<3> up = Vec<3>::UnitZ();
+  CHECK(beyond_sheet_edge<3>(sheet, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h));
+  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(-3.0 * h, 0.3 * h, 0.0), up, h));  // surrounded
+  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(0.5 * h, 0.3 * h, 0.0), up, h));   // within h of the edge's points
+  CHECK_FALSE(beyond_sheet_edge<3>(Neighbourhood<3>{}, Vec<3>::Zero(), up, h));      // no old point: nothing to judge
+  // One side alone (a sparse input resampled finely, or an open surface,
+  // whose rims have their own rule): no sheet's edge.
+  for (Vec<3>& n : sheet.normals) n = Vec<3>::UnitZ();
+  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h));
+}
 
 TEST_CASE("locating only the crossings that may win HAVECLOSEPOINT keeps what locating every crossing keeps") {
   // The resampler judges losers on the root finder's first guesses; off-circle

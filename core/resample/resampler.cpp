@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/resample/segment_root.hpp"
+#include "core/resample/sheet_edge.hpp"
 #include "core/surface/local_support.hpp"
 #include "core/util/block_join.hpp"
 #include "core/util/parallel_compact.hpp"
@@ -231,6 +232,8 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
   const double h = grid.spacing();
   std::vector<std::size_t> evaluations(static_cast<std::size_t>(pool.threads()), 0);
   std::vector<std::size_t> fallbacks(evaluations.size(), 0);
+  std::vector<std::size_t> jumps(evaluations.size(), 0);
+  std::vector<std::size_t> past_edges(evaluations.size(), 0);
 
   // Each crossing's root finding reads every point within Delta of its edge,
   // i.e. within Delta + h/2 of the edge's midpoint (with widened supports:
@@ -246,6 +249,8 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
     // Counted locally and added once: the blocks' counters share a cache line.
     std::size_t block_evaluations = 0;
     std::size_t block_fallbacks = 0;
+    std::size_t block_jumps = 0;
+    std::size_t block_past_edges = 0;
     Neighbourhood<D> candidates;
     std::size_t candidates_brick = std::numeric_limits<std::size_t>::max();
     Vec<D> candidates_centre = Vec<D>::Zero();
@@ -254,6 +259,7 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
       const Evaluation<D>& f0 = values_[x.from];
       const Evaluation<D>& f1 = values_[x.to];
       SegmentRoot<D> root;
+      bool past_edge = false;
       if (variant == Variant::exact) {
         const Vec<D> start = grid.vertex_position(field_.vertex_of(x.from));
         Vec<D> direction = Vec<D>::Zero();
@@ -271,19 +277,34 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
                                       direction, f0, f1, x.t, x.axis);
         block_evaluations += static_cast<std::size_t>(root.evaluations);
         block_fallbacks += root.fallback ? 1 : 0;
+        block_jumps += root.jump ? 1 : 0;
+        // Only where both sides of a sheet are within reach (the
+        // neighbourhood's normals disagree) can the sheet end unseen by the
+        // rim test: elsewhere the test costs nothing.
+        past_edge = !root.jump && surface.parameters().orientation_filter && !candidates.consistent &&
+                    beyond_sheet_edge<D>(candidates, Vec<D>(start + root.t * direction), root.normal, h);
+        block_past_edges += past_edge ? 1 : 0;
       } else {
         root = interpolate_segment_root(f0, f1, x.axis);
       }
-      x.t = root.t;
+      // A crossing that makes no point is marked by a t off the edge, for the cut below.
+      x.t = root.jump || past_edge ? kNoPointMark : root.t;
       x.normal = root.normal;
     }
     evaluations[static_cast<std::size_t>(block)] += block_evaluations;
     fallbacks[static_cast<std::size_t>(block)] += block_fallbacks;
+    jumps[static_cast<std::size_t>(block)] += block_jumps;
+    past_edges[static_cast<std::size_t>(block)] += block_past_edges;
   });
   for (std::size_t b = 0; b < evaluations.size(); ++b) {
     stats_.root_evaluations += evaluations[b];
     stats_.root_fallbacks += fallbacks[b];
+    stats_.jumps += jumps[b];
+    stats_.past_sheet_edge += past_edges[b];
   }
+  if (stats_.jumps + stats_.past_sheet_edge > 0)
+    keep_in_order(crossings_, crossings_scratch_, [](const Crossing& x, std::size_t) { return x.t != kNoPointMark; },
+                  pool);
 }
 
 template <int D>

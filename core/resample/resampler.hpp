@@ -19,7 +19,12 @@
 // locates the crossings, and settles them with HAVECLOSEPOINT: of the
 // crossings whose nearer edge end is the same vertex, one becomes a new point.
 // (Crossings that certainly lose, judged on the root finder's first guesses,
-// are dropped before locating: see drop_certain_losers().)
+// are dropped before locating: see drop_certain_losers(). A sign change that
+// the root finder finds to be a jump of F, not a zero, is no crossing: where
+// two sides of a sheet come within Delta, F switches between their fits where
+// the point nearest to x switches sides, and a point there would lie on no
+// surface, up to a support away from both sides. Nor is a crossing past the
+// edge of such a sheet: core/resample/sheet_edge.hpp.)
 // The paper keeps the first in walk order; we keep the one nearest to the
 // vertex (ties: the first listed), which is where the surface passes closest
 // to it, so the kept point sits between its neighbours rather than at one end
@@ -66,6 +71,8 @@ struct ResampleStats {
   std::size_t inserted = 0;            // new points
   std::size_t root_fallbacks = 0;      // exact roots that met an undefined F and took the interpolant's zero
   std::size_t root_evaluations = 0;    // evaluations of F by the root finder
+  std::size_t jumps = 0;               // located sign changes that are jumps of F, not zeros: no point
+  std::size_t past_sheet_edge = 0;     // located crossings past the edge of a sheet (core/resample/sheet_edge.hpp): no point
   std::size_t rim_samples = 0;         // samples of the old points found on a rim (core/surface/surface_rim.hpp)
   std::size_t beyond_rim = 0;          // crossings dropped at an open surface's rim: outside the domain, or crowding a rim point
   std::size_t rim_carried = 0;         // rim samples carried into the new points
@@ -122,6 +129,8 @@ class Resampler {
   // gradients are rougher slope estimates, so a few choices differ slightly
   // (docs/performance.md).
   static constexpr double kEstimateUncertainty = 0.05;
+  // locate_crossings()' mark on a crossing that makes no point: a position off its edge.
+  static constexpr double kNoPointMark = -1.0;
 
   // Lists the edges with a sign change, each with its crossing's estimated position.
   void list_crossings(Variant variant, double h, ThreadPool& pool);
@@ -134,7 +143,9 @@ class Resampler {
   void drop_certain_losers(double uncertainty, ThreadPool& pool);
   // HAVECLOSEPOINT on the located positions: cuts crossings_ to the kept ones.
   void keep_closest_crossings(ThreadPool& pool);
-  // The kept crossings' positions (exact roots or the interpolant's zeros) and normals.
+  // The kept crossings' positions (exact roots or the interpolant's zeros) and
+  // normals; cuts crossings_ to those that are zeros of F, not jumps, and lie
+  // within the old points' sheets (core/resample/sheet_edge.hpp).
   void locate_crossings(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool);
 
   VertexField<D> field_;                // vertex <-> slot

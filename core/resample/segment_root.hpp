@@ -41,6 +41,9 @@ struct SegmentRoot {
   Vec<D> normal = Vec<D>::Zero();    // unit
   int evaluations = 0;               // of F by the root finder
   bool fallback = false;             // F was undefined on the way: t is the interpolant's zero
+  // The sign change is a jump of F, not a zero (core/math/root_finding.hpp):
+  // t is the jump's nearer side, and no surface passes there.
+  bool jump = false;
 };
 
 // The unit normal a new point carries. It only orients the next fit, so its
@@ -136,6 +139,7 @@ SegmentRoot<D> locate_segment_root(Evaluate&& evaluate, const Vec<D>& start, con
       0.0, 1.0, f0.value, f1.value, options);
   out.evaluations = root.evaluations;
   out.fallback = !root.ok;
+  out.jump = root.jump;
   out.t = root.ok ? root.t : linear_t;
   // The normal of the evaluation nearest the root, if it is that near (the
   // root finder may stop on an extrapolated step it did not evaluate).
