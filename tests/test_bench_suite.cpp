@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/run/bench_suite.hpp"
+#include "core/geometry/shapes.hpp"
 #include "core/run/drag_bench.hpp"
 
 using namespace amls;
@@ -83,4 +84,38 @@ TEST_CASE("bench: the drag, resampled always or locally, keeps the surface whole
     // A pull this hard strains much of this small sphere, and a region is resampled whole once it passes the limit.
     if (mode == DragResample::local) CHECK(r.mean_resampled() < 0.7 * always_resampled);
   }
+}
+
+TEST_CASE("bench: the drag by two region handles keeps the surface whole, near the exact shape, and lifts its top cap") {
+  DragBenchConfig config;
+  config.points = 6000;
+  config.threads = 2;
+  config.steps = 6;
+  config.pull_h = 3.0;
+  config.tracers = 5000;
+  config.resample = DragResample::local;
+  config.regions = true;
+  const DragBenchReport r = run_drag_bench(config);
+  INFO("distance mean " << r.exact_to_surface_mean_h << " max " << r.exact_to_surface_max_h << ", spacing "
+                        << r.spacing_h.min << "/" << r.spacing_h.max << ", drift " << r.rest_map_drift_h);
+  CHECK(r.step_seconds.size() == 6);
+  CHECK(r.holes == 0);
+  CHECK(r.exact_to_surface_max_h < 0.1);
+  CHECK(r.spacing_h.min > 0.3);
+  CHECK(r.spacing_h.max < 2.0);
+  CHECK(r.rest_map_drift_h < 0.5);
+}
+
+TEST_CASE("bench: the drag's regions are the caps about the poles, the bottom pinned and the top pulled") {
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 2000);
+  std::vector<Vec<3>> bottom, top;
+  for (const Vec<3>& p : sphere.positions) (p.z() < 0.5 ? bottom : top).push_back(p);
+  const auto a = std::make_shared<const PointRegion<3>>(bottom, 0.01);
+  const auto b = std::make_shared<const PointRegion<3>>(top, 0.01);
+  const std::vector<RegionHandle<3>> regions = drag_regions({a, b}, 0.02, 3);
+  REQUIRE(regions.size() == 2);
+  CHECK(regions[0].pinned);
+  CHECK(regions[0].motion == RegionMotion<3>{});
+  CHECK_FALSE(regions[1].pinned);
+  CHECK((regions[1].motion.translation - Vec<3>(0.0, 0.0, 0.06)).norm() < 1e-15);
 }

@@ -46,21 +46,22 @@ std::string sphere_step_name(std::size_t points) {
   return "3D sphere step, " + std::to_string(points / 1000) + "k points";
 }
 
-std::string drag_name(std::size_t points, DragResample mode) {
+std::string drag_name(std::size_t points, DragResample mode, bool regions) {
   const std::string size =
       points >= 1000000 ? std::to_string(points / 1000000) + "M" : std::to_string(points / 1000) + "k";
-  return "drag " + size + " " + to_string(mode);
+  return "drag " + size + " " + to_string(mode) + (regions ? " regions" : "");
 }
 
-BenchCase bench_drag(std::size_t points, DragResample mode, int threads) {
+BenchCase bench_drag(std::size_t points, DragResample mode, bool regions, int threads) {
   reset_peak_memory();
   DragBenchConfig config;
   config.points = points;
   config.threads = threads;
   config.resample = mode;
+  config.regions = regions;
   const DragBenchReport r = run_drag_bench(config);
   BenchCase c;
-  c.name = drag_name(points, mode);
+  c.name = drag_name(points, mode, regions);
   c.points = r.points_initial;
   c.points_processed = r.points_initial * r.step_seconds.size();
   c.timings = r.timings.phases();
@@ -146,9 +147,14 @@ std::vector<BenchSpec> bench_suite(int threads) {
   }
   for (const std::size_t n : {50000u, 200000u, 1000000u})
     specs.push_back(measured(sphere_step_name(n), [n, threads] { return bench_sphere_step(n, threads); }));
-  for (const std::size_t n : {200000u, 1000000u})
+  for (const std::size_t n : {200000u, 1000000u}) {
     for (const DragResample mode : {DragResample::always, DragResample::local})
-      specs.push_back(measured(drag_name(n, mode), [n, mode, threads] { return bench_drag(n, mode, threads); }));
+      specs.push_back(
+          measured(drag_name(n, mode, false), [n, mode, threads] { return bench_drag(n, mode, false, threads); }));
+    // The same drag by two region handles: what a region costs against a point handle.
+    specs.push_back(measured(drag_name(n, DragResample::local, true),
+                             [n, threads] { return bench_drag(n, DragResample::local, true, threads); }));
+  }
   const std::string enright_name = "3D Enright 128^3 exact";
   specs.push_back(measured(enright_name, [enright_name, threads] {
                      FlowTestConfig enright;

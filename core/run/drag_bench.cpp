@@ -16,6 +16,21 @@ namespace {
 
 const Vec<3> kCenter(0.5, 0.5, 0.5);
 constexpr double kRadius = 0.3;
+// The region variant's caps: the sphere's points within this of a pole.
+constexpr double kCapRadius = 0.05;
+
+// The handles of one step, of either kind.
+struct DragHandles {
+  std::vector<Vec<3>> points;
+  std::vector<RegionHandle<3>> regions;
+};
+
+std::shared_ptr<const PointRegion<3>> cap(const PointSet<3>& sphere, const Vec<3>& pole, double reach) {
+  std::vector<Vec<3>> members;
+  for (const Vec<3>& p : sphere.positions)
+    if ((p - pole).norm() <= kCapRadius) members.push_back(p);
+  return std::make_shared<const PointRegion<3>>(std::move(members), reach);
+}
 
 // |F| / h at the tracers, and where F is undefined there.
 void measure_tracers(const AmlsSurface<3>& surface, const std::vector<Vec<3>>& tracers, ThreadPool& pool,
@@ -94,6 +109,13 @@ std::vector<Vec<3>> drag_handles(const Vec<3>& center, double radius, double pul
           center + (radius + pull * static_cast<double>(step)) * Vec<3>::UnitZ()};
 }
 
+std::vector<RegionHandle<3>> drag_regions(const std::array<std::shared_ptr<const PointRegion<3>>, 2>& caps, double pull,
+                                          std::size_t step) {
+  RegionMotion<3> pulled;
+  pulled.translation = pull * static_cast<double>(step) * Vec<3>::UnitZ();
+  return {{caps[0], RegionMotion<3>{}, true}, {caps[1], pulled, false}};
+}
+
 DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   DragBenchReport report;
   report.config = config;
@@ -103,8 +125,17 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   const double pull = config.pull_h * h;
   const Grid<3> grid(Vec<3>::Zero(), h);
   PointSet<3> tracers = config.tracers > 0 ? sample_sphere(kCenter, kRadius, config.tracers) : PointSet<3>{};
+  const PointSet<3> sphere = sample_sphere(kCenter, kRadius, config.points);
+  std::array<std::shared_ptr<const PointRegion<3>>, 2> caps;
+  if (config.regions)
+    caps = {cap(sphere, kCenter - kRadius * Vec<3>::UnitZ(), h), cap(sphere, kCenter + kRadius * Vec<3>::UnitZ(), h)};
+  auto handles = [&](std::size_t k) {
+    return config.regions ? DragHandles{{}, drag_regions(caps, pull, k)}
+                          : DragHandles{drag_handles(kCenter, kRadius, pull, k), {}};
+  };
   auto deformation = [&](std::size_t k) {
-    return MlsDeformation<3>(drag_handles(kCenter, kRadius, pull, k), drag_handles(kCenter, kRadius, pull, k + 1));
+    const DragHandles from = handles(k), to = handles(k + 1);
+    return MlsDeformation<3>(from.points, to.points, from.regions, to.regions);
   };
   // The final points' quality, on a surface of their own, against the exact shape.
   auto measure = [&](const PointSet<3>& points, const PointSet<3>& exact_shape, ThreadPool& pool) {
@@ -119,7 +150,7 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
   };
   if (config.resample == DragResample::always) {
     DeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
-    surface.set_points(sample_sphere(kCenter, kRadius, config.points));
+    surface.set_points(sphere);
     surface.resample_only();
     report.points_initial = surface.points().size();
     for (std::size_t k = 0; k < config.steps; ++k) {
@@ -139,13 +170,13 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
     measure(surface.points(), tracers, surface.pool());
   } else {
     LocalDeformingSurface<3> surface(grid, AmlsParameters{}, Variant::exact, config.threads);
-    surface.set_points(sample_sphere(kCenter, kRadius, config.points));
+    surface.set_points(sphere);
     surface.resample_all();
     report.points_initial = surface.points().size();
     // The exact shape of this loop: the tracers mapped exactly from the same
     // rest states as the points (a new one at every resample).
     PointSet<3> rest_tracers = tracers;
-    std::vector<Vec<3>> tracers_rest_handles = drag_handles(kCenter, kRadius, pull, 0);
+    DragHandles tracers_rest = handles(0);
     for (std::size_t k = 0; k < config.steps; ++k) {
       const MlsDeformation<3> map = deformation(k);
       ParallelStopwatch clock;
@@ -159,12 +190,14 @@ DragBenchReport run_drag_bench(const DragBenchConfig& config) {
       report.timings += stats.timings;
       if (tracers.empty()) continue;
       map.apply(tracers, surface.pool());
-      if (surface.rest_handles() != tracers_rest_handles) {
-        MlsDeformation<3>(tracers_rest_handles, surface.rest_handles()).apply(rest_tracers, surface.pool());
-        tracers_rest_handles = surface.rest_handles();
+      if (surface.rest_handles() != tracers_rest.points || !same_places(surface.rest_regions(), tracers_rest.regions)) {
+        MlsDeformation<3>(tracers_rest.points, surface.rest_handles(), tracers_rest.regions, surface.rest_regions())
+            .apply(rest_tracers, surface.pool());
+        tracers_rest = {surface.rest_handles(), surface.rest_regions()};
       }
     }
-    MlsDeformation<3>(tracers_rest_handles, drag_handles(kCenter, kRadius, pull, config.steps))
+    const DragHandles end = handles(config.steps);
+    MlsDeformation<3>(tracers_rest.points, end.points, tracers_rest.regions, end.regions)
         .apply(rest_tracers, surface.pool());
     for (std::size_t i = 0; i < tracers.size(); ++i)
       report.rest_map_drift_h =

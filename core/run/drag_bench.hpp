@@ -7,6 +7,11 @@
 // (rigid) that takes the handles from one step to the next and keeps the
 // surface sampled by the chosen policy; only the step is timed.
 //
+// With `regions`, the handles are two region handles instead
+// (core/deform/region_handle.hpp), reach h: the cap of the sphere's points
+// within 0.05 of its bottom, pinned, and the cap within 0.05 of its top,
+// moved outwards as the top handle is: what the same drag costs with regions.
+//
 // Quality after the run, as `amls deform` measures it: the nearest-neighbour
 // spacing of the final points, and tracers (a denser sampling of the initial
 // sphere carried by the same maps, never resampled) against the final
@@ -15,10 +20,13 @@
 // rest states rather than step by step, and its tracers follow the same maps
 // exactly. Both end as a drag does: `always` resamples once more, `local`
 // maps its points exactly.
+#include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/deform/region_handle.hpp"
 #include "core/run/deforming_surface.hpp"
 #include "core/surface/metrics.hpp"
 #include "core/util/parallel_stopwatch.hpp"
@@ -39,6 +47,7 @@ struct DragBenchConfig {
   double pull_h = 0.5;          // the moving handle's step, in h
   std::size_t tracers = 50000;  // samples of the exact shape (0: no quality figures)
   DragResample resample = DragResample::always;
+  bool regions = false;  // two region handles instead of the four point handles
 };
 
 struct DragBenchReport {
@@ -57,7 +66,12 @@ struct DragBenchReport {
   double max_ms() const;
   double cpu_median_ms() const;
   double mean_resampled() const;
-  // Quality after the run (with tracers).
+  // With `regions`, the handles are two region handles instead
+// (core/deform/region_handle.hpp), reach h: the cap of the sphere's points
+// within 0.05 of its bottom, pinned, and the cap within 0.05 of its top,
+// moved outwards as the top handle is: what the same drag costs with regions.
+//
+// Quality after the run (with tracers).
   SpacingStats spacing_h;
   double exact_to_surface_mean_h = 0.0;  // mean |F| / h at the tracers where F is defined
   double exact_to_surface_max_h = 0.0;
@@ -79,6 +93,10 @@ struct DragBenchReport {
 
 // The drag's handles after `step` steps, for a sphere about `center` of `radius`.
 std::vector<Vec<3>> drag_handles(const Vec<3>& center, double radius, double pull, std::size_t step);
+// The drag's region handles after `step` steps: `caps` (bottom, top) at rest,
+// the bottom pinned, the top moved outwards by `pull` a step.
+std::vector<RegionHandle<3>> drag_regions(const std::array<std::shared_ptr<const PointRegion<3>>, 2>& caps, double pull,
+                                          std::size_t step);
 
 DragBenchReport run_drag_bench(const DragBenchConfig& config);
 

@@ -77,6 +77,11 @@ std::vector<Vec<D>> LocalDeformingSurface<D>::rest_handles() const {
 }
 
 template <int D>
+std::vector<RegionHandle<D>> LocalDeformingSurface<D>::rest_regions() const {
+  return rest_ ? rest_->regions : std::vector<RegionHandle<D>>{};
+}
+
+template <int D>
 typename LocalDeformingSurface<D>::Saved LocalDeformingSurface<D>::save() const {
   const bool mapped_on_lattice = rest_ && !exact_;
   return Saved{mapped_on_lattice ? std::nullopt : std::optional<PointSet<D>>(points_), strain_, rest_, current_, current_regions_,

@@ -76,6 +76,8 @@ class LocalDeformingSurface {
 
   // The handles' rest positions of the current rest state (empty until a step after set_points or resample_all).
   std::vector<Vec<D>> rest_handles() const;
+  // And its regions at rest (empty as rest_handles()).
+  std::vector<RegionHandle<D>> rest_regions() const;
 
   const PointSet<D>& points() const { return points_; }
   const std::vector<float>& strain() const { return strain_; }
