@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -282,8 +283,14 @@ typename MlsDeformation<D>::Handles MlsDeformation<D>::make_handles(std::vector<
 }
 
 template <int D>
-MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>& v,
-                                           double* weights) const {
+double MlsDeformation<D>::gap_to(const Region& region, const Vec<D>& v) {
+  const Vec<D> rest = region.to_rest * v + region.rest_offset;
+  return region.scale * (std::sqrt(region.region->squared_distance(rest)) - region.region->reach());
+}
+
+template <int D>
+MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>& v, double* weights,
+                                           std::span<const double> gaps) const {
   const std::vector<Vec<D>>& p = handles.p;
   const std::vector<Vec<D>>& q = handles.q;
   const std::size_t n = p.size();
@@ -295,8 +302,7 @@ MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>&
   // and moves with it.
   for (std::size_t r = 0; r < handles.regions.size(); ++r) {
     const Region& region = handles.regions[r];
-    const Vec<D> rest = region.to_rest * v + region.rest_offset;
-    const double gap = region.scale * (std::sqrt(region.region->squared_distance(rest)) - region.region->reach());
+    const double gap = gaps.empty() ? gap_to(region, v) : gaps[r];
     if (gap <= 0.0 || gap * gap <= handles.snap_squared) {
       local.linear = region.linear;
       local.position = region.linear * v + region.offset;
@@ -377,12 +383,15 @@ MlsLocalMap<D> MlsDeformation<D>::evaluate(const Handles& handles, const Vec<D>&
 }
 
 template <int D>
-MlsLocalMap<D> MlsDeformation<D>::local_map(const Vec<D>& v) const {
+MlsLocalMap<D> MlsDeformation<D>::local_map(const Vec<D>& v, std::span<const double> gaps) const {
+  if (!gaps.empty() && gaps.size() != direct_.regions.size())
+    throw std::invalid_argument("MLS deformation: " + std::to_string(gaps.size()) + " region gaps given for " +
+                                std::to_string(direct_.regions.size()) + " regions");
   // A point at a time (the lattice's nodes): no allocation for the usual few handles.
   constexpr std::size_t kFewHandles = 16;
   std::array<double, kFewHandles> few;
   std::vector<double> many(direct_.p.size() > kFewHandles ? direct_.p.size() : 0);
-  const MlsLocalMap<D> local = evaluate(direct_, v, many.empty() ? few.data() : many.data());
+  const MlsLocalMap<D> local = evaluate(direct_, v, many.empty() ? few.data() : many.data(), gaps);
   if (local.affine_fell_back) fallbacks_.count.fetch_add(1, std::memory_order_relaxed);
   return local;
 }
@@ -399,7 +408,7 @@ void MlsDeformation<D>::transform(const Handles& handles, PointSet<D>& points, T
     std::vector<double> weights(handles.p.size());
     std::size_t fell_back = 0;
     for (std::size_t i = begin; i < end; ++i) {
-      const MlsLocalMap<D> local = evaluate(handles, points.positions[i], weights.data());
+      const MlsLocalMap<D> local = evaluate(handles, points.positions[i], weights.data(), {});
       points.positions[i] = local.position;
       if (carry_normals) points.normals[i] = carry_normal<D>(local.linear, points.normals[i]);
       if (local.affine_fell_back) ++fell_back;
@@ -443,11 +452,16 @@ std::vector<RegionHandle<D>> MlsDeformation<D>::regions_at(double t) const {
 template <int D>
 double MlsDeformation<D>::region_gap(const Vec<D>& v) const {
   double least = std::numeric_limits<double>::infinity();
-  for (const Region& region : direct_.regions) {
-    const Vec<D> rest = region.to_rest * v + region.rest_offset;
-    least = std::min(least, region.scale * (std::sqrt(region.region->squared_distance(rest)) - region.region->reach()));
-  }
+  for (const Region& region : direct_.regions) least = std::min(least, gap_to(region, v));
   return least;
+}
+
+template <int D>
+void MlsDeformation<D>::region_gaps(const Vec<D>& v, std::span<double> gaps) const {
+  if (gaps.size() != direct_.regions.size())
+    throw std::invalid_argument("MLS deformation: room for " + std::to_string(gaps.size()) + " region gaps, " +
+                                std::to_string(direct_.regions.size()) + " regions");
+  for (std::size_t r = 0; r < gaps.size(); ++r) gaps[r] = gap_to(direct_.regions[r], v);
 }
 
 template <int D>

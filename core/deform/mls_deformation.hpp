@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,7 +91,14 @@ class MlsDeformation final : public Deformation<D> {
   // f(v) of the deformation from `from` to `to`. Handles interpolate: f(p_i) = q_i.
   // With no handles f is the identity.
   Vec<D> map(const Vec<D>& v) const { return local_map(v).position; }
-  MlsLocalMap<D> local_map(const Vec<D>& v) const;
+  MlsLocalMap<D> local_map(const Vec<D>& v) const { return local_map(v, {}); }
+  // The same, with each region's gap at v given (one per region, as
+  // region_gaps() wrote them; empty: searched for): the gaps depend only on
+  // the regions' first places, so a caller that maps the same points by many
+  // maps from the same first places (a rest lattice's nodes, step after
+  // step) searches the regions' members once. The result is local_map(v)'s,
+  // bit for bit. Throws std::invalid_argument for another number of gaps.
+  MlsLocalMap<D> local_map(const Vec<D>& v, std::span<const double> gaps) const;
 
   // Moves every point by f and carries its normal by L^{-T}, renormalised.
   // Points are independent, so the result does not depend on the thread count.
@@ -116,6 +124,8 @@ class MlsDeformation final : public Deformation<D> {
   // the regions are before the map (<= 0 within one; infinite without
   // regions): the map is rigid within reach and changes fast just outside.
   double region_gap(const Vec<D>& v) const;
+  // Each region's gap at v, in order (`gaps` holds one per region): their least is region_gap(v).
+  void region_gaps(const Vec<D>& v, std::span<double> gaps) const;
   // The first region (in order) whose reach holds v, if any, asked of each
   // region's cells about v rather than of its tree; and the map there, the
   // region's motion: what local_map gives within reach, with no fit.
@@ -170,8 +180,11 @@ class MlsDeformation final : public Deformation<D> {
 
   static Handles make_handles(std::vector<Vec<D>> p, std::vector<Vec<D>> q, const std::vector<RegionHandle<D>>& from,
                               const std::vector<RegionHandle<D>>& to);
-  // `weights` is scratch space for one entry per handle.
-  MlsLocalMap<D> evaluate(const Handles& handles, const Vec<D>& v, double* weights) const;
+  // The distance from v to the region's members less its reach, at v's scale.
+  static double gap_to(const Region& region, const Vec<D>& v);
+  // `weights` is scratch space for one entry per handle; `gaps`, the regions'
+  // gaps at v if known (gap_to's), else empty.
+  MlsLocalMap<D> evaluate(const Handles& handles, const Vec<D>& v, double* weights, std::span<const double> gaps) const;
   void transform(const Handles& handles, PointSet<D>& points, ThreadPool& pool) const;
 
   std::vector<Vec<D>> from_, to_;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -64,9 +65,10 @@ struct Node {
   Blend<D> blend;
 };
 
+// `gaps`: the regions' gaps at x (MlsDeformation::region_gaps), or empty.
 template <int D>
-Sample<D> exact_sample(const MlsDeformation<D>& map, const Vec<D>& x) {
-  const MlsLocalMap<D> local = map.local_map(x);
+Sample<D> exact_sample(const MlsDeformation<D>& map, const Vec<D>& x, std::span<const double> gaps = {}) {
+  const MlsLocalMap<D> local = map.local_map(x, gaps);
   return {local.position, normal_transform<D>(local.linear)};
 }
 
@@ -119,6 +121,26 @@ struct Box {
 template <int D>
 using Corners = std::array<const Node<D>*, 1 << D>;
 
+template <int D>
+Vec<D> cell_centre(const Box<D>& box, const IVec<D>& c) {
+  return box.node_position(c).array() + 0.5 * box.spacing;
+}
+
+// The regions' gaps (MlsDeformation::region_gaps) at a lattice's nodes and
+// cell centres. They depend only on the regions' first places, which a
+// drag's steps from one rest state share: measured at the first step's map,
+// they spare the later steps a search of the members at every node.
+template <int D>
+struct RegionGaps {
+  std::vector<RegionHandle<D>> regions;  // the first places they were measured at
+  std::vector<double> nodes;             // node k's gap to region r at k * regions.size() + r
+  std::vector<double> centres;           // the same for cell k's centre
+
+  std::span<const double> at(const std::vector<double>& gaps, std::size_t k) const {
+    return std::span<const double>(gaps).subspan(k * regions.size(), regions.size());
+  }
+};
+
 // The multilinear weight of corner v at t in [0, 1]^D.
 template <int D>
 double corner_weight(int v, const Vec<D>& t) {
@@ -167,13 +189,15 @@ struct Refined {
 // motion by O(g^2) in the gap g, so it meets the motion with its first
 // derivative and the interpolation follows it (the centre check stands
 // guard), and the points within reach take the motion exactly (see map()).
+// `centre_gaps`: the regions' gaps at the centre, or empty.
 template <int D>
 bool needs_refinement(const MlsDeformation<D>& map, const Box<D>& box, const IVec<D>& c, const Corners<D>& corners,
-                      double tolerance) {
+                      double tolerance, std::span<const double> centre_gaps = {}) {
   for (const Vec<D>& handle : map.from())
     if (box.near_cell(c, handle, 1.0)) return true;
-  const Vec<D> centre = box.node_position(c).array() + 0.5 * box.spacing;
-  return (interpolate<D>(corners, Vec<D>::Constant(0.5), centre).position - map.map(centre)).norm() > tolerance;
+  const Vec<D> centre = cell_centre(box, c);
+  return (interpolate<D>(corners, Vec<D>::Constant(0.5), centre).position - map.local_map(centre, centre_gaps).position)
+             .norm() > tolerance;
 }
 
 // Sub-nodes are mapped exactly; their Jacobians, which the exact map does not
@@ -242,6 +266,34 @@ struct MlsRestLattice<D>::Layout {
   // The points cell by cell: cell k's are by_cell[cell_first[k]] up to cell_first[k + 1].
   std::vector<std::uint32_t> cell_first;
   std::vector<std::uint32_t> by_cell;
+
+  // The gaps of the regions of the last map with regions (none before one).
+  // Kept behind a lock: the lattice is shared and map() is const.
+  mutable std::mutex region_gaps_lock;
+  mutable std::shared_ptr<const RegionGaps<D>> region_gaps;
+
+  // The gaps for `map`'s regions at their first places: those kept if they
+  // are for the same places, else measured now and kept. Null without regions.
+  std::shared_ptr<const RegionGaps<D>> gaps_for(const MlsDeformation<D>& map, ThreadPool& pool) const {
+    if (map.from_regions().empty()) return nullptr;
+    const std::lock_guard<std::mutex> hold(region_gaps_lock);
+    if (region_gaps && same_places(region_gaps->regions, map.from_regions())) return region_gaps;
+    auto gaps = std::make_shared<RegionGaps<D>>();
+    gaps->regions = map.from_regions();
+    const std::size_t count = gaps->regions.size();
+    gaps->nodes.resize(node_list.size() * count);
+    gaps->centres.resize(cells.size() * count);
+    pool.parallel_for(node_list.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t k = begin; k < end; ++k)
+        map.region_gaps(box.node_position(node_list[k]), std::span<double>(gaps->nodes).subspan(k * count, count));
+    });
+    pool.parallel_for(cells.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t k = begin; k < end; ++k)
+        map.region_gaps(cell_centre(box, cells[k]), std::span<double>(gaps->centres).subspan(k * count, count));
+    });
+    region_gaps = std::move(gaps);
+    return region_gaps;
+  }
 
   std::span<const std::uint32_t> points_of(std::size_t cell) const {
     return std::span<const std::uint32_t>(by_cell).subspan(cell_first[cell], cell_first[cell + 1] - cell_first[cell]);
@@ -371,6 +423,9 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     return stats;
   }
   const Box<D>& box = l.box;
+  const std::shared_ptr<const RegionGaps<D>> gaps = l.gaps_for(map, pool);
+  auto node_gaps = [&](std::size_t k) { return gaps ? gaps->at(gaps->nodes, k) : std::span<const double>(); };
+  auto centre_gaps = [&](std::size_t k) { return gaps ? gaps->at(gaps->centres, k) : std::span<const double>(); };
 
   // The nodes, mapped exactly, then the corners' Jacobians from their neighbours.
   std::vector<Node<D>> nodes(l.node_list.size());
@@ -378,7 +433,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   pool.parallel_for(l.node_list.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       const Vec<D> x = box.node_position(l.node_list[k]);
-      const Sample<D> exact = exact_sample(map, x);
+      const Sample<D> exact = exact_sample(map, x, node_gaps(k));
       nodes[k].rest = x;
       nodes[k].position = exact.position;
       if (k < l.corner_nodes) normals[k] = exact.normals;
@@ -437,12 +492,12 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   // needed it.
   std::vector<std::uint8_t> all_held(l.cells.size(), 0);
   std::vector<std::uint32_t> holder(n, kHeldByNone);  // point -> the region whose reach holds it
-  if (!map.from_regions().empty()) {
+  if (gaps) {
     const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
     pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
       for (std::size_t k = begin; k < end; ++k) {
-        const Vec<D> centre = box.node_position(l.cells[k]).array() + 0.5 * box.spacing;
-        all_held[k] = map.region_gap(centre) <= half_diagonal ? 1 : 0;
+        const std::span<const double> at_centre = centre_gaps(k);
+        all_held[k] = *std::min_element(at_centre.begin(), at_centre.end()) <= half_diagonal ? 1 : 0;
       }
     });
     pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
@@ -460,7 +515,8 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   std::vector<std::uint32_t> refined_of(l.cells.size(), kInterpolated);  // cell -> its Refined, if refined
   pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k)
-      if (!all_held[k] && needs_refinement(map, box, l.cells[k], l.corners(nodes, k), options.tolerance))
+      if (!all_held[k] &&
+          needs_refinement(map, box, l.cells[k], l.corners(nodes, k), options.tolerance, centre_gaps(k)))
         refined_of[k] = 0;
   });
   std::vector<std::size_t> to_refine;
