@@ -126,15 +126,18 @@ Vec<D> cell_centre(const Box<D>& box, const IVec<D>& c) {
   return box.node_position(c).array() + 0.5 * box.spacing;
 }
 
-// The regions' gaps (MlsDeformation::region_gaps) at a lattice's nodes and
-// cell centres. They depend only on the regions' first places, which a
-// drag's steps from one rest state share: measured at the first step's map,
-// they spare the later steps a search of the members at every node.
+// What a map's regions decide on a lattice of rest points, which depends
+// only on their first places: a drag's steps from one rest state share it,
+// so it is made at the first step's map and kept, sparing the later steps a
+// search of the members at every node and every point near a region.
 template <int D>
-struct RegionGaps {
-  std::vector<RegionHandle<D>> regions;  // the first places they were measured at
-  std::vector<double> nodes;             // node k's gap to region r at k * regions.size() + r
-  std::vector<double> centres;           // the same for cell k's centre
+struct RegionLayout {
+  std::vector<RegionHandle<D>> regions;  // the first places it was made for
+  // The regions' gaps (MlsDeformation::region_gaps) at node k, region r at k * regions.size() + r.
+  std::vector<double> node_gaps;
+  std::vector<double> centre_gaps;        // the same at cell k's centre
+  std::vector<std::uint8_t> all_held;     // per cell: every point of it lies within a region's reach
+  std::vector<std::uint32_t> holder;      // per point: the region whose reach holds it, or kHeldByNone
 
   std::span<const double> at(const std::vector<double>& gaps, std::size_t k) const {
     return std::span<const double>(gaps).subspan(k * regions.size(), regions.size());
@@ -267,32 +270,50 @@ struct MlsRestLattice<D>::Layout {
   std::vector<std::uint32_t> cell_first;
   std::vector<std::uint32_t> by_cell;
 
-  // The gaps of the regions of the last map with regions (none before one).
-  // Kept behind a lock: the lattice is shared and map() is const.
-  mutable std::mutex region_gaps_lock;
-  mutable std::shared_ptr<const RegionGaps<D>> region_gaps;
+  // The layout of the regions of the last map with regions (none before
+  // one). Kept behind a lock: the lattice is shared and map() is const.
+  mutable std::mutex region_layout_lock;
+  mutable std::shared_ptr<const RegionLayout<D>> region_layout;
 
-  // The gaps for `map`'s regions at their first places: those kept if they
-  // are for the same places, else measured now and kept. Null without regions.
-  std::shared_ptr<const RegionGaps<D>> gaps_for(const MlsDeformation<D>& map, ThreadPool& pool) const {
+  // The layout of `map`'s regions at their first places over `positions`
+  // (the lattice's points): the one kept if it is for the same places, else made now
+  // and kept. Null without regions.
+  std::shared_ptr<const RegionLayout<D>> regions_of(const MlsDeformation<D>& map, const std::vector<Vec<D>>& positions,
+                                                    ThreadPool& pool) const {
     if (map.from_regions().empty()) return nullptr;
-    const std::lock_guard<std::mutex> hold(region_gaps_lock);
-    if (region_gaps && same_places(region_gaps->regions, map.from_regions())) return region_gaps;
-    auto gaps = std::make_shared<RegionGaps<D>>();
-    gaps->regions = map.from_regions();
-    const std::size_t count = gaps->regions.size();
-    gaps->nodes.resize(node_list.size() * count);
-    gaps->centres.resize(cells.size() * count);
+    const std::lock_guard<std::mutex> hold(region_layout_lock);
+    if (region_layout && same_places(region_layout->regions, map.from_regions())) return region_layout;
+    auto r = std::make_shared<RegionLayout<D>>();
+    r->regions = map.from_regions();
+    const std::size_t count = r->regions.size();
+    r->node_gaps.resize(node_list.size() * count);
+    r->centre_gaps.resize(cells.size() * count);
     pool.parallel_for(node_list.size(), [&](std::size_t begin, std::size_t end, int) {
       for (std::size_t k = begin; k < end; ++k)
-        map.region_gaps(box.node_position(node_list[k]), std::span<double>(gaps->nodes).subspan(k * count, count));
+        map.region_gaps(box.node_position(node_list[k]), std::span<double>(r->node_gaps).subspan(k * count, count));
     });
+    // A cell whose centre is within half a diagonal of a region's reach may
+    // have all its points held; only its points are asked.
+    const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
+    r->all_held.resize(cells.size());
     pool.parallel_for(cells.size(), [&](std::size_t begin, std::size_t end, int) {
-      for (std::size_t k = begin; k < end; ++k)
-        map.region_gaps(cell_centre(box, cells[k]), std::span<double>(gaps->centres).subspan(k * count, count));
+      for (std::size_t k = begin; k < end; ++k) {
+        const std::span<double> at_centre = std::span<double>(r->centre_gaps).subspan(k * count, count);
+        map.region_gaps(cell_centre(box, cells[k]), at_centre);
+        r->all_held[k] = *std::min_element(at_centre.begin(), at_centre.end()) <= half_diagonal ? 1 : 0;
+      }
     });
-    region_gaps = std::move(gaps);
-    return region_gaps;
+    r->holder.assign(positions.size(), kHeldByNone);
+    pool.parallel_for(positions.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (r->all_held[point_cell[i]])
+          if (const std::optional<std::size_t> held = map.region_holding(positions[i]))
+            r->holder[i] = static_cast<std::uint32_t>(*held);
+    });
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      if (r->holder[i] == kHeldByNone) r->all_held[point_cell[i]] = 0;
+    region_layout = std::move(r);
+    return region_layout;
   }
 
   std::span<const std::uint32_t> points_of(std::size_t cell) const {
@@ -423,9 +444,11 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     return stats;
   }
   const Box<D>& box = l.box;
-  const std::shared_ptr<const RegionGaps<D>> gaps = l.gaps_for(map, pool);
-  auto node_gaps = [&](std::size_t k) { return gaps ? gaps->at(gaps->nodes, k) : std::span<const double>(); };
-  auto centre_gaps = [&](std::size_t k) { return gaps ? gaps->at(gaps->centres, k) : std::span<const double>(); };
+  const std::shared_ptr<const RegionLayout<D>> regions = l.regions_of(map, points.positions, pool);
+  auto node_gaps = [&](std::size_t k) { return regions ? regions->at(regions->node_gaps, k) : std::span<const double>(); };
+  auto centre_gaps = [&](std::size_t k) {
+    return regions ? regions->at(regions->centre_gaps, k) : std::span<const double>();
+  };
 
   // The nodes, mapped exactly, then the corners' Jacobians from their neighbours.
   std::vector<Node<D>> nodes(l.node_list.size());
@@ -484,31 +507,19 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
     return stats;
   }
 
-  // The points within a region's reach take its motion exactly; only cells a
-  // region's reach may enter are asked. A cell whose points all do reads no
-  // interpolation, so it is neither checked nor refined: the map's weights
-  // change fast off the surface near a region (the gap grows with the height
-  // above it), and its volume would fail the check where its points never
-  // needed it.
-  std::vector<std::uint8_t> all_held(l.cells.size(), 0);
-  std::vector<std::uint32_t> holder(n, kHeldByNone);  // point -> the region whose reach holds it
-  if (gaps) {
-    const double half_diagonal = 0.5 * std::sqrt(static_cast<double>(D)) * box.spacing;
-    pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int) {
-      for (std::size_t k = begin; k < end; ++k) {
-        const std::span<const double> at_centre = centre_gaps(k);
-        all_held[k] = *std::min_element(at_centre.begin(), at_centre.end()) <= half_diagonal ? 1 : 0;
-      }
-    });
-    pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int) {
-      for (std::size_t i = begin; i < end; ++i)
-        if (all_held[l.point_cell[i]])
-          if (const std::optional<std::size_t> r = map.region_holding(points.positions[i]))
-            holder[i] = static_cast<std::uint32_t>(*r);
-    });
-    for (std::size_t i = 0; i < n; ++i)
-      if (holder[i] == kHeldByNone) all_held[l.point_cell[i]] = 0;
+  // The points within a region's reach take its motion exactly. A cell
+  // whose points all do reads no interpolation, so it is neither checked nor
+  // refined: the map's weights change fast off the surface near a region (the
+  // gap grows with the height above it), and its volume would fail the check
+  // where its points never needed it.
+  std::vector<std::uint8_t> none_held;
+  std::vector<std::uint32_t> held_by_none;
+  if (!regions) {
+    none_held.assign(l.cells.size(), 0);
+    held_by_none.assign(n, kHeldByNone);
   }
+  const std::vector<std::uint8_t>& all_held = regions ? regions->all_held : none_held;
+  const std::vector<std::uint32_t>& holder = regions ? regions->holder : held_by_none;
 
   // Check every other cell; refine those that fail.
   constexpr std::uint32_t kInterpolated = std::numeric_limits<std::uint32_t>::max();

@@ -98,7 +98,10 @@ class MlsRestLattice {
   // checked; std::invalid_argument otherwise). The strain added is that of
   // the step from the map whose node images `last` holds (null or empty:
   // the rest state) to this one; `last`, when not null, then holds this
-  // map's.
+  // map's. What the map's regions decide here (their gaps at the nodes and
+  // cell centres, which points their reach holds) depends only on their
+  // first places: it is kept from one map to the next with the same first
+  // places, and made anew for others. Thread-safe.
   MlsLatticeStats map(const MlsDeformation<D>& deformation, const PointSet<D>& points, PointSet<D>& mapped,
                       std::vector<float>* strain, MlsNodeImages<D>* last, ThreadPool& pool) const;
 
