@@ -276,8 +276,9 @@ struct MlsRestLattice<D>::Layout {
   mutable std::shared_ptr<const RegionLayout<D>> region_layout;
 
   // The layout of `map`'s regions at their first places over `positions`
-  // (the lattice's points): the one kept if it is for the same places, else made now
-  // and kept. Null without regions.
+  // (the lattice's points): the one kept if it is for the same places, else
+  // made now and kept (a cancelled pool throws before it is). Null without
+  // regions.
   std::shared_ptr<const RegionLayout<D>> regions_of(const MlsDeformation<D>& map, const std::vector<Vec<D>>& positions,
                                                     ThreadPool& pool) const {
     if (map.from_regions().empty()) return nullptr;
