@@ -53,10 +53,7 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
               << " points where the input is sparse (up to " << result.widening.widest << " Delta)\n";
   if (!options.mesh.empty())
     std::cout << "mesh: "
-              << export_surface_mesh(options.mesh, result.points, result.grid,
-                                     AmlsParameters{options.resampling.radius_factor}, options.resampling.variant,
-                                     options.resampling.threads)
-                     .summary()
+              << export_resampled_mesh(options.mesh, result, options.resampling).summary()
               << ", wrote " << options.mesh << "\n";
   const RimReport& rim = result.rim;
   if (rim.samples_in + rim.samples_out > 0)

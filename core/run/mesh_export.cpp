@@ -54,11 +54,22 @@ MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& point
   return write_extracted(path, extract_mesh(points, grid, parameters, variant, pool));
 }
 
+template <int D>
+MeshExport export_resampled_mesh(const std::string& path, const ResampledPointSet<D>& resampled,
+                                 const PointSetResampling& options) {
+  return export_surface_mesh(path, resampled.points, resampled.grid, AmlsParameters{options.radius_factor},
+                             options.variant, options.threads);
+}
+
 template MeshExport export_surface_mesh<2>(const std::string&, const AmlsSurface<2>&, Variant, ThreadPool&);
 template MeshExport export_surface_mesh<3>(const std::string&, const AmlsSurface<3>&, Variant, ThreadPool&);
 template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
                                            const AmlsParameters&, Variant, int);
 template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
                                            const AmlsParameters&, Variant, int);
+template MeshExport export_resampled_mesh<2>(const std::string&, const ResampledPointSet<2>&,
+                                             const PointSetResampling&);
+template MeshExport export_resampled_mesh<3>(const std::string&, const ResampledPointSet<3>&,
+                                             const PointSetResampling&);
 
 }  // namespace amls

@@ -6,6 +6,7 @@
 
 #include "core/geometry/surface_mesh.hpp"
 #include "core/resample/mesh_extraction.hpp"
+#include "core/run/point_set_resampling.hpp"
 
 namespace amls {
 
@@ -30,11 +31,27 @@ template <int D>
 MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
                                const AmlsParameters& parameters, Variant variant, int threads);
 
+// The mesh `amls resample --mesh` writes: the surface of the resampled points
+// on the resampling's grid, with its Delta and variant. The editor's Export
+// mesh of those points, opened as a file, is the same mesh byte for byte
+// (tests/test_editor_worker.cpp), so what is found of one holds for the other.
+template <int D>
+MeshExport export_resampled_mesh(const std::string& path, const ResampledPointSet<D>& resampled,
+                                 const PointSetResampling& options);
+
 extern template MeshExport export_surface_mesh<2>(const std::string&, const AmlsSurface<2>&, Variant, ThreadPool&);
 extern template MeshExport export_surface_mesh<3>(const std::string&, const AmlsSurface<3>&, Variant, ThreadPool&);
 extern template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
                                                   const AmlsParameters&, Variant, int);
+extern template MeshExport export_resampled_mesh<2>(const std::string&, const ResampledPointSet<2>&,
+                                                    const PointSetResampling&);
+extern template MeshExport export_resampled_mesh<3>(const std::string&, const ResampledPointSet<3>&,
+                                                    const PointSetResampling&);
 extern template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
                                                   const AmlsParameters&, Variant, int);
+extern template MeshExport export_resampled_mesh<2>(const std::string&, const ResampledPointSet<2>&,
+                                                    const PointSetResampling&);
+extern template MeshExport export_resampled_mesh<3>(const std::string&, const ResampledPointSet<3>&,
+                                                    const PointSetResampling&);
 
 }  // namespace amls
