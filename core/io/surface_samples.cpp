@@ -70,6 +70,7 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
                              " edges belong to three or more triangles");
     if (samples.flipped)
       out.warnings.push_back(path + ": the faces are wound clockwise seen from outside; normals were flipped outward");
+    if (samples.boundary_edges == 0 && samples.nonmanifold_edges == 0) out.closed_mesh = std::move(input.mesh);
     return out;
   }
   LoadedPointSet& loaded = input.point_set;
