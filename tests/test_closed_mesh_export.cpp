@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <utility>
+
 #include "core/io/mesh_inside.hpp"
 #include "core/io/mesh_sampling.hpp"
 #include "core/run/mesh_export.hpp"
@@ -20,6 +22,16 @@ TEST_CASE("winding number: +-1 inside a closed mesh, 0 outside, whichever way it
     CHECK(inside_mesh(box, Vec<3>(0.2, 0.2, 0.02)));
     CHECK_FALSE(inside_mesh(box, Vec<3>(1.01, 0.2, 0.02)));
   }
+}
+
+TEST_CASE("only a closed, consistently wound mesh has an inside to ask") {
+  TriangleMesh box = box_mesh(Vec<3>::Zero(), Vec<3>::Ones());
+  CHECK(closed_and_consistently_wound(box));
+  CHECK(closed_and_consistently_wound(box_mesh(Vec<3>::Zero(), Vec<3>::Ones(), true)));
+  std::swap(box.triangles[3][1], box.triangles[3][2]);  // one face wound the other way
+  CHECK_FALSE(closed_and_consistently_wound(box));
+  box.triangles.erase(box.triangles.begin() + 3);  // a hole
+  CHECK_FALSE(closed_and_consistently_wound(box));
 }
 
 TEST_CASE("a closed input mesh gives a closed mesh: where F is undefined, the input's inside decides") {

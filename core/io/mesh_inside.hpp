@@ -14,6 +14,12 @@ namespace amls {
 
 double winding_number(const TriangleMesh& mesh, const Vec<3>& x);
 
+// Whether the mesh bounds a solid whose inside the winding number gives:
+// every edge is run through by exactly two triangles, in opposite directions.
+// (A mesh wound every which way, as CGAL's *-shuffled.off are, is not: its
+// winding number is neither 0 nor +-1 around it.)
+bool closed_and_consistently_wound(const TriangleMesh& mesh);
+
 inline bool inside_mesh(const TriangleMesh& mesh, const Vec<3>& x) { return std::abs(winding_number(mesh, x)) > 0.5; }
 
 }  // namespace amls

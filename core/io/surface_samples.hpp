@@ -27,8 +27,9 @@ struct SurfaceSamples {
   PointSet<3> points;  // a 2D set has z = 0 and nz = 0
   std::string source;  // what was read and done, for messages: "mesh of 12 triangles, sampled", ...
   std::vector<std::string> warnings;  // each names the file
-  // The input mesh, where it is closed (every edge of two triangles): its
-  // inside is known, which closes the mesh export where F is undefined
+  // The input mesh, where it is closed and consistently wound
+  // (closed_and_consistently_wound, core/io/mesh_inside.hpp): its inside is
+  // known, which closes the mesh export where F is undefined
   // (core/run/mesh_export.hpp).
   std::optional<TriangleMesh> closed_mesh;
 };
