@@ -35,8 +35,8 @@ struct ResampleOptions {
 };
 
 template <int D>
-void resample_and_write(const PointSet<D>& input, std::size_t file_points, const ResampleOptions& options,
-                        PointFileFormat format, Stopwatch& clock) {
+void resample_and_write(const PointSet<D>& input, std::size_t file_points, const TriangleMesh* closed_input,
+                        const ResampleOptions& options, PointFileFormat format, Stopwatch& clock) {
   const ResampledPointSet<D> result = resample_point_set(input, options.resampling);
   require_resampled_points(result, options.resampling);
   // The spacing goes into the file, so that reading it back chooses this h again.
@@ -53,10 +53,7 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
               << " points where the input is sparse (up to " << result.widening.widest << " Delta)\n";
   if (!options.mesh.empty())
     std::cout << "mesh: "
-              << export_surface_mesh(options.mesh, result.points, result.grid,
-                                     AmlsParameters{options.resampling.radius_factor}, options.resampling.variant,
-                                     options.resampling.threads)
-                     .summary()
+              << export_resampled_mesh(options.mesh, result, options.resampling, closed_input).summary()
               << ", wrote " << options.mesh << "\n";
   const RimReport& rim = result.rim;
   if (rim.samples_in + rim.samples_out > 0)
@@ -147,9 +144,10 @@ void add_resample_command(CLI::App& app) {
     for (const std::string& warning : shape.warnings) std::cerr << "amls: warning: " << warning << "\n";
     std::cout << options->input << ": " << shape.source << "\n";
     if (shape.dimension == 2) {
-      resample_and_write(to_2d(shape.points), shape.file_points, *options, format, clock);
+      resample_and_write(to_2d(shape.points), shape.file_points, nullptr, *options, format, clock);
     } else {
-      resample_and_write(shape.points, shape.file_points, *options, format, clock);
+      resample_and_write(shape.points, shape.file_points, shape.closed_mesh ? &*shape.closed_mesh : nullptr, *options,
+                         format, clock);
     }
   });
 }

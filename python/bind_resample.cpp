@@ -38,9 +38,9 @@ void resample_opened(const OpenedShape& shape, const std::string& input, PointSe
   run.points_in = points.size();
   run.seconds = clock.lap();
   run.peak_memory_mib = peak_memory_mib();
+  // As `amls resample --mesh` writes it (a closed input mesh gives a closed mesh).
   if (!mesh_path.empty())
-    export_surface_mesh(mesh_path, result.points, result.grid, AmlsParameters{options.radius_factor}, options.variant,
-                        options.threads);
+    export_resampled_mesh(mesh_path, result, options, shape.closed_mesh ? &*shape.closed_mesh : nullptr);
   out.dimension = D;
   out.points = held_in_3d(result.points);
   out.report = resampling_report_json(result, options, run).dump();

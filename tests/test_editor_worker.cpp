@@ -14,11 +14,13 @@
 #include "app/editor/scene_start.hpp"
 #include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/run/mesh_export.hpp"
 #include "editor_test_support.hpp"
 
 using namespace amls;
 using namespace amls::editor;
 using namespace std::chrono_literals;
+using amls::test::file_bytes;
 using amls::test::write_text;
 
 namespace {
@@ -270,6 +272,28 @@ TEST_CASE("Export mesh writes the current surface as a closed mesh, or says why 
   CHECK(has_message(messages, Message::Level::error, "circle.stl"));
   CHECK(std::filesystem::file_size(dir.file("circle.obj")) > 0);
   CHECK_FALSE(std::filesystem::exists(dir.file("circle.stl")));
+}
+
+TEST_CASE("Export mesh of a resampled file is the mesh `amls resample --mesh` wrote, byte for byte") {
+  amls::test::TempDir dir;
+  // In the unit cube, so that both grids have their origin at 0, and at an h
+  // of 3 significant digits, which the editor keeps as it reads it.
+  PointSetResampling options;
+  options.spacing = 0.04;
+  options.threads = 2;
+  const ResampledPointSet<3> resampled =
+      resample_point_set(sample_sphere(Vec<3>::Constant(0.5), 0.3, 3000), options);
+  const std::string points = dir.file("resampled.ply");
+  write_point_set(points, resampled.points, PointFileFormat::ply_binary_little_endian, resampled.grid.spacing());
+  const MeshExport cli = export_resampled_mesh(dir.file("cli.ply"), resampled, options);
+  REQUIRE(cli.topology.closed());
+
+  EditorWorker worker;
+  worker.post(command::LoadFile{points});
+  worker.post(command::ExportMesh{dir.file("editor.ply")});
+  REQUIRE(worker.wait_until_idle(kPatience));
+  CHECK(has_message(worker.take_messages(), Message::Level::info, "closed to " + dir.file("editor.ply")));
+  CHECK(file_bytes(dir.file("editor.ply")) == file_bytes(dir.file("cli.ply")));
 }
 
 TEST_CASE("Save Scene writes the session's steps as a scene whose start reads back") {

@@ -2,24 +2,14 @@
 
 #include "core/io/mesh_sampling.hpp"
 #include "core/surface/metrics.hpp"
+#include "mesh_fixtures.hpp"
 
 using namespace amls;
 
 namespace {
 
-// The unit cube [0, 1]^3 as 12 triangles, counter-clockwise seen from outside unless `inward`.
-TriangleMesh cube(bool inward = false) {
-  TriangleMesh m;
-  for (int i = 0; i < 8; ++i) m.vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-  const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.triangles.push_back({q[0], q[1], q[2]});
-    m.triangles.push_back({q[0], q[2], q[3]});
-  }
-  if (inward)
-    for (auto& t : m.triangles) std::swap(t[1], t[2]);
-  return m;
-}
+// The unit cube [0, 1]^3, counter-clockwise seen from outside unless `inward`.
+TriangleMesh cube(bool inward = false) { return amls::test::box_mesh(Vec<3>::Zero(), Vec<3>::Ones(), inward); }
 
 }  // namespace
 

@@ -25,6 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using amls::test::file_bytes;
 using amls::test::TempDir;
 
 void write_file(const std::string& path, const std::string& bytes) {
@@ -33,10 +34,6 @@ void write_file(const std::string& path, const std::string& bytes) {
   REQUIRE(out.good());
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // Appends `value` as the bytes of a T in the given byte order.
 template <typename T>
@@ -607,7 +604,7 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary file 
   PointSet<3> good;
   good.add(Vec<3>(1, 2, 3), Vec<3>(0, 0, 1));
   write_point_set(path, good, PointFileFormat::ply_ascii);
-  const std::string before = read_file(path);
+  const std::string before = file_bytes(path);
 
   PointSet<3> bad = good;
   bad.add(Vec<3>(std::nan(""), 0, 0), Vec<3>(0, 0, 1));
@@ -621,7 +618,7 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary file 
   bad.positions.push_back(Vec<3>(0, 0, 0));
   CHECK_THROWS_WITH_AS(write_point_set(path, bad, PointFileFormat::ply_binary_big_endian),
                        doctest::Contains("2 positions but 1 normals"), std::invalid_argument);
-  CHECK(read_file(path) == before);
+  CHECK(file_bytes(path) == before);
 
   fs::create_directory(dir.file("taken.ply"));
   CHECK_THROWS_WITH_AS(write_point_set(dir.file("taken.ply"), good, PointFileFormat::ply_binary_little_endian),

@@ -25,6 +25,7 @@
 
 using namespace amls;
 using amls::test::ready_surface;
+using amls::test::file_bytes;
 using amls::test::TempDir;
 
 namespace {
@@ -96,11 +97,6 @@ SurfaceMesh<3> tetrahedron() {
   mesh.normals.assign(4, Vec<3>(0, 0, 1));
   mesh.cells = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   return mesh;
-}
-
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 }  // namespace

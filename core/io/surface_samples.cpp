@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/io/mesh_inside.hpp"
 #include "core/io/mesh_sampling.hpp"
 #include "core/surface/normal_estimation.hpp"
 #include "core/io/point_set_io.hpp"
@@ -70,6 +71,7 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
                              " edges belong to three or more triangles");
     if (samples.flipped)
       out.warnings.push_back(path + ": the faces are wound clockwise seen from outside; normals were flipped outward");
+    if (closed_and_consistently_wound(mesh)) out.closed_mesh = std::move(input.mesh);
     return out;
   }
   LoadedPointSet& loaded = input.point_set;

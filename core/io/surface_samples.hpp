@@ -4,6 +4,7 @@
 // without normals with normals estimated (core/surface/normal_estimation.hpp);
 // a triangle mesh (OBJ, or PLY or OFF with faces) sampled at about the given
 // spacing with face normals (core/io/mesh_sampling.hpp). `amls resample` and scenes read shapes through this.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ struct SurfaceSamples {
   PointSet<3> points;  // a 2D set has z = 0 and nz = 0
   std::string source;  // what was read and done, for messages: "mesh of 12 triangles, sampled", ...
   std::vector<std::string> warnings;  // each names the file
+  // The input mesh, where it is closed and consistently wound
+  // (closed_and_consistently_wound, core/io/mesh_inside.hpp): its inside is
+  // known, which closes the mesh export where F is undefined
+  // (core/run/mesh_export.hpp).
+  std::optional<TriangleMesh> closed_mesh;
 };
 
 // A shape file as read, before it is sampled: a triangle mesh or a point set.

@@ -89,8 +89,8 @@ Reordered<N> lone_first(int lone) {
 template <int D>
 class MeshBuilder {
  public:
-  MeshBuilder(const AmlsSurface<D>& surface, const Resampler<D>& resampler)
-      : surface_(surface), resampler_(resampler), simplices_(kuhn_simplices<D>()) {}
+  MeshBuilder(const AmlsSurface<D>& surface, const Resampler<D>& resampler, const UndefinedSide<D>& undefined_side)
+      : surface_(surface), resampler_(resampler), simplices_(kuhn_simplices<D>()), undefined_side_(undefined_side) {}
 
   ExtractedMesh<D> build(Variant variant, ThreadPool& pool) {
     const Grid<D>& grid = surface_.grid();
@@ -101,17 +101,15 @@ class MeshBuilder {
       std::uint8_t& state = *cube_state_.try_emplace(Grid<D>::key(cube)).first;
       if (state != kUnseen) continue;
       const Corners corners = corner_values(cube);
-      const bool start = corners.defined && corners.negative != 0 && corners.negative != kAllCorners;
+      const bool start = meshable(corners) && corners.negative != 0 && corners.negative != kAllCorners;
       state = start ? kQueued : kNotStart;
       if (start) queue_.push_back(cube);
     }
     for (std::size_t next = 0; next < queue_.size(); ++next) {
       const IVec<D> cube = queue_[next];
       const Corners corners = corner_values(cube);
-      if (!corners.defined) {
-        ++out_.stats.undefined_cubes;
-        continue;
-      }
+      if (!corners.defined) ++out_.stats.undefined_cubes;
+      if (!meshable(corners)) continue;
       queue_neighbours(cube, corners.negative);
       for (const KuhnSimplex<D>& simplex : simplices_) mesh_simplex(cube, corners, simplex);
     }
@@ -139,6 +137,19 @@ class MeshBuilder {
     int direction;
   };
 
+  // A cube with a corner where F is undefined is meshed only where the
+  // caller says which side such a corner lies on.
+  bool meshable(const Corners& corners) const { return corners.defined || static_cast<bool>(undefined_side_); }
+
+  // Whether a corner counts as negative: F < 0 there, or, where F is
+  // undefined, the caller's side (asked once per corner).
+  bool negative_at(const IVec<D>& vertex, const Evaluation<D>& e) {
+    if (e.defined || !undefined_side_) return e.value < 0.0;
+    auto [side, inserted] = undefined_sides_.try_emplace(Grid<D>::key(vertex));
+    if (inserted) *side = undefined_side_(surface_.grid().vertex_position(vertex)) ? 1 : 0;
+    return *side != 0;
+  }
+
   // F at a vertex where value() has been called.
   const Evaluation<D>& known_value(const IVec<D>& vertex) const {
     if (const Evaluation<D>* known = resampler_.vertex_value(vertex)) return *known;
@@ -160,9 +171,10 @@ class MeshBuilder {
   Corners corner_values(const IVec<D>& cube) {
     Corners corners;
     for (int c = 0; c < kCubeCorners<D>; ++c) {
-      const Evaluation<D>& e = corners.values[static_cast<std::size_t>(c)] = value(cube + corner_offset<D>(c));
+      const IVec<D> vertex = cube + corner_offset<D>(c);
+      const Evaluation<D>& e = corners.values[static_cast<std::size_t>(c)] = value(vertex);
       corners.defined = corners.defined && e.defined;
-      if (e.value < 0.0) corners.negative |= 1 << c;
+      if (negative_at(vertex, e)) corners.negative |= 1 << c;
     }
     return corners;
   }
@@ -281,7 +293,9 @@ class MeshBuilder {
         const Vec<D> step = h * corner_offset<D>(e.direction).template cast<double>();
         const int axis = std::countr_zero(static_cast<unsigned>(e.direction));
         SegmentRoot<D> root;
-        if (variant == Variant::interpolated) {
+        if (!f0.defined || !f1.defined) {
+          root = cap_root(f0.defined ? f0 : f1, f0.defined, step, axis);
+        } else if (variant == Variant::interpolated) {
           root = interpolate_segment_root(f0, f1, axis);
         } else {
           const double guess = estimate_segment_root<D>(f0, f1, step);
@@ -296,6 +310,20 @@ class MeshBuilder {
     for (const auto& f : fallbacks) out_.stats.root_fallbacks += f.value;
   }
 
+  // The crossing on an edge from a corner where F is defined (`known`, at the
+  // edge's start when `from_start`) to one where it is undefined and of the
+  // other side (UndefinedSide): where F's first-order extrapolation from the
+  // known end reaches zero, else at the undefined end (kEndMargin keeps it on
+  // the edge), with the known end's normal.
+  static SegmentRoot<D> cap_root(const Evaluation<D>& known, bool from_start, const Vec<D>& step, int axis) {
+    const double reach = -known.value / known.gradient.dot(from_start ? step : Vec<D>(-step));
+    const double fraction = reach > 0.0 && reach < 1.0 ? reach : 1.0;  // false for NaN too
+    SegmentRoot<D> root;
+    root.t = from_start ? fraction : 1.0 - fraction;
+    root.normal = oriented_unit_normal<D>(known.gradient, known.mean_normal, axis);
+    return root;
+  }
+
   void round_to_lattice(const Grid<D>& grid) {
     const double step = kVertexLattice * grid.spacing();
     for (Vec<D>& v : out_.mesh.vertices)
@@ -305,6 +333,8 @@ class MeshBuilder {
   const AmlsSurface<D>& surface_;
   const Resampler<D>& resampler_;
   const std::vector<KuhnSimplex<D>> simplices_;
+  const UndefinedSide<D>& undefined_side_;
+  FlatHashMap<std::uint8_t> undefined_sides_;  // vertex -> 1 inside, 0 outside, where F is undefined
   FlatHashMap<std::uint8_t> cube_state_;
   std::vector<IVec<D>> queue_;
   FlatHashMap<std::uint32_t> extra_;  // vertex -> index in extra_values_
@@ -317,27 +347,28 @@ class MeshBuilder {
 }  // namespace
 
 template <int D>
-ExtractedMesh<D> extract_mesh(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool) {
+ExtractedMesh<D> extract_mesh(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool,
+                              const UndefinedSide<D>& undefined_side) {
   Resampler<D> resampler;
   resampler.update_function(surface, pool);
-  return MeshBuilder<D>(surface, resampler).build(variant, pool);
+  return MeshBuilder<D>(surface, resampler, undefined_side).build(variant, pool);
 }
 
 template <int D>
 ExtractedMesh<D> extract_mesh(const PointSet<D>& points, const Grid<D>& grid, const AmlsParameters& parameters,
-                              Variant variant, ThreadPool& pool) {
+                              Variant variant, ThreadPool& pool, const UndefinedSide<D>& undefined_side) {
   AmlsSurface<D> surface(grid, parameters);
   surface.set_points(points);
   surface.hash_points(pool);
   surface.update_normals(pool);
-  return extract_mesh(surface, variant, pool);
+  return extract_mesh(surface, variant, pool, undefined_side);
 }
 
-template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&);
-template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&);
+template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&, const UndefinedSide<2>&);
+template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&, const UndefinedSide<3>&);
 template ExtractedMesh<2> extract_mesh<2>(const PointSet<2>&, const Grid<2>&, const AmlsParameters&, Variant,
-                                          ThreadPool&);
+                                          ThreadPool&, const UndefinedSide<2>&);
 template ExtractedMesh<3> extract_mesh<3>(const PointSet<3>&, const Grid<3>&, const AmlsParameters&, Variant,
-                                          ThreadPool&);
+                                          ThreadPool&, const UndefinedSide<3>&);
 
 }  // namespace amls

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/io/mesh_inside.hpp"
 #include "core/io/mesh_writer.hpp"
 
 namespace amls {
@@ -48,17 +49,32 @@ MeshExport export_surface_mesh(const std::string& path, const AmlsSurface<D>& su
 
 template <int D>
 MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
-                               const AmlsParameters& parameters, Variant variant, int threads) {
+                               const AmlsParameters& parameters, Variant variant, int threads,
+                               const UndefinedSide<D>& undefined_side) {
   mesh_format_from_extension(path);
   ThreadPool pool(threads);
-  return write_extracted(path, extract_mesh(points, grid, parameters, variant, pool));
+  return write_extracted(path, extract_mesh(points, grid, parameters, variant, pool, undefined_side));
+}
+
+template <int D>
+MeshExport export_resampled_mesh(const std::string& path, const ResampledPointSet<D>& resampled,
+                                 const PointSetResampling& options, const TriangleMesh* closed_input) {
+  UndefinedSide<D> side;
+  if constexpr (D == 3)
+    if (closed_input) side = [closed_input](const Vec<3>& corner) { return inside_mesh(*closed_input, corner); };
+  return export_surface_mesh(path, resampled.points, resampled.grid, AmlsParameters{options.radius_factor},
+                             options.variant, options.threads, side);
 }
 
 template MeshExport export_surface_mesh<2>(const std::string&, const AmlsSurface<2>&, Variant, ThreadPool&);
 template MeshExport export_surface_mesh<3>(const std::string&, const AmlsSurface<3>&, Variant, ThreadPool&);
 template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
-                                           const AmlsParameters&, Variant, int);
+                                           const AmlsParameters&, Variant, int, const UndefinedSide<2>&);
 template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
-                                           const AmlsParameters&, Variant, int);
+                                           const AmlsParameters&, Variant, int, const UndefinedSide<3>&);
+template MeshExport export_resampled_mesh<2>(const std::string&, const ResampledPointSet<2>&,
+                                             const PointSetResampling&, const TriangleMesh*);
+template MeshExport export_resampled_mesh<3>(const std::string&, const ResampledPointSet<3>&,
+                                             const PointSetResampling&, const TriangleMesh*);
 
 }  // namespace amls

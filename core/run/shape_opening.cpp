@@ -61,6 +61,7 @@ OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPo
   out.points = std::move(samples.points);
   out.source = std::move(samples.source);
   out.warnings = std::move(samples.warnings);
+  out.closed_mesh = std::move(samples.closed_mesh);
   return out;
 }
 

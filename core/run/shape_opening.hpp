@@ -16,6 +16,7 @@
 // Every warning names the file.
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct OpenedShape {
   std::size_t file_points = 0;  // the points the file holds (a mesh: its vertices)
   std::string source;           // what was read and done: "point set of 5210 points without normals; ..."
   std::vector<std::string> warnings;
+  std::optional<TriangleMesh> closed_mesh;  // SurfaceSamples::closed_mesh
 };
 
 // The steps open_shape_file() reports, in order.

@@ -27,6 +27,22 @@ def test_the_kitten_scan_resamples_to_the_command_lines_bytes(amls, tmp_path):
     assert from_path[2]["input"] == kitten and report["input"] == "" and report["output"] == ""
 
 
+def test_a_closed_thin_slab_meshes_closed_to_the_command_lines_bytes(amls, tmp_path):
+    # Thinner than Delta: without the input mesh's inside, its mesh was open past the slab's edges.
+    # Corner i at (x, y, z) chosen by its bits 0, 1, 2; each face two triangles, counter-clockwise from outside.
+    corners = [((0.25, 0.75)[i & 1], (0.25, 0.75)[i >> 1 & 1], (0.48, 0.52)[i >> 2 & 1]) for i in range(8)]
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    faces = [t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))]
+    slab = tmp_path / "slab.off"
+    slab.write_text("OFF\n8 12 0\n" + "".join("%g %g %g\n" % p for p in corners) +
+                    "".join("3 %d %d %d\n" % f for f in faces))
+    output = run_cli("resample", slab, "--out", tmp_path / "cli.ply", "--mesh", tmp_path / "cli_mesh.ply",
+                     "--spacing", "0.02", "--accept-loss")
+    assert "triangles, closed, wrote" in output
+    amls.resample(str(slab), spacing=0.02, accept_loss=True, mesh=str(tmp_path / "py_mesh.ply"))
+    assert (tmp_path / "py_mesh.ply").read_bytes() == (tmp_path / "cli_mesh.ply").read_bytes()
+
+
 def test_results_do_not_depend_on_threads(amls):
     points, normals = sphere(3000)
     one = amls.resample(points, normals, grid=64, threads=1)
