@@ -204,3 +204,26 @@ TEST_CASE("scene run: without resampling the stem thins out and the report names
     if (s.probed && s.step < r.broken_at_step) CHECK(s.holes == 0);
   CHECK(r.per_step.back().spacing_h.max > 3.0);
 }
+
+TEST_CASE("scene run: under local, the end's sampled probes read F of the whole final surface") {
+  const Scene<2> scene = short_clover();
+  SceneRunOptions options;
+  options.tracers_per_point = 4;  // every tracer a probe of the whole run
+  options.max_steps = 6;
+  options.policy = ResamplePolicy::parse("local");
+  options.max_probes = 0;
+  const SceneRunReport whole = run_scene<2>(scene, options);
+  REQUIRE_FALSE(whole.final_probes_sampled);
+  REQUIRE(whole.probes == whole.tracers);
+  options.max_probes = 40;
+  const SceneRunReport r = run_scene<2>(scene, options);
+  REQUIRE(r.points_final == whole.points_final);  // the measure changes nothing of the run
+  CHECK(r.final_probes_sampled);
+  CHECK(r.probes > 0);
+  CHECK(r.probes < whole.probes);
+  // The sampled probes are some of the whole run's, and the part of the points
+  // fitted gives F there as all of them do: their largest |F| is at most the whole's.
+  CHECK(r.final_holes == whole.final_holes);
+  CHECK(r.final_probe_max_h <= whole.final_probe_max_h + 1e-9);
+  CHECK(r.final_probe_max_h > 0.0);
+}

@@ -193,8 +193,13 @@ LocalStepStats LocalDeformingSurface<D>::step(const Deformation<D>& deformation,
 
 template <int D>
 AmlsSurface<D> LocalDeformingSurface<D>::fitted_surface() {
+  return fitted_surface(points_);
+}
+
+template <int D>
+AmlsSurface<D> LocalDeformingSurface<D>::fitted_surface(PointSet<D> points) {
   AmlsSurface<D> surface(grid_, parameters_);
-  surface.set_points(points_);
+  surface.set_points(std::move(points));
   surface.hash_points(pool_);
   surface.update_normals(pool_);
   return surface;

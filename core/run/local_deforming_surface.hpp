@@ -73,6 +73,8 @@ class LocalDeformingSurface {
   // The surface of the current points, hashed and with their pseudo-normals,
   // to evaluate or measure F (made anew: the loop itself keeps no index).
   AmlsSurface<D> fitted_surface();
+  // The same for `points` (e.g. a part of the current points), on this surface's grid and parameters.
+  AmlsSurface<D> fitted_surface(PointSet<D> points);
 
   // The handles' rest positions of the current rest state (empty until a step after set_points or resample_all).
   std::vector<Vec<D>> rest_handles() const;

@@ -65,6 +65,7 @@ nlohmann::json scene_report_json(const SceneRunReport& r) {
   j["exact_to_points_h"] = {{"mean", r.exact_to_points_h.mean}, {"max", r.exact_to_points_h.max}};
   j["final_probe_holes"] = r.final_holes;
   j["final_probe_max_h"] = r.final_probe_max_h;
+  j["final_probes_sampled"] = r.final_probes_sampled;
   nlohmann::json timings = timings_json(r.timings);
   timings["tracers"] = r.tracer_seconds;
   timings["measure"] = r.measure_seconds;

@@ -10,7 +10,9 @@
 #include "core/run/local_deforming_surface.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "core/run/settle.hpp"
+#include "core/surface/block_sample.hpp"
 #include "core/surface/spacing_band.hpp"
+#include "core/util/block_join.hpp"
 #include "core/util/stopwatch.hpp"
 
 namespace amls {
@@ -51,6 +53,31 @@ void probe(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& probes, Thr
     max_h = std::max(max_h, f.value.max_h);
   }
 }
+
+// The ids of the positions that `keep` accepts, ascending, on the pool.
+template <int D, typename Keep>
+std::vector<std::uint32_t> kept_ids(const std::vector<Vec<D>>& positions, Keep keep, ThreadPool& pool) {
+  std::vector<OwnCacheLine<std::vector<std::uint32_t>>> parts(static_cast<std::size_t>(pool.threads()));
+  pool.parallel_for(positions.size(), [&](std::size_t begin, std::size_t end, int block) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (keep(positions[i])) parts[static_cast<std::size_t>(block)].value.push_back(static_cast<std::uint32_t>(i));
+  });
+  std::vector<std::uint32_t> ids;
+  join_blocks(parts, ids, pool);
+  return ids;
+}
+
+// The end's probes of a large run lie in blocks of this side (in h, or the
+// margin below where wider), sampled as amls deform samples a frame's spacing
+// (block_sample.hpp); the surface they are probed on is fitted to the points
+// within kEndMargin Delta of those blocks only. F at a probe reads the points
+// within Delta of it; their normals, the points within Delta of them; their
+// rim flags and bias offsets, one Delta further: three Delta, and these
+// points give F at the probes as all of them would (to rounding: the hash
+// orders them otherwise). Blocks much wider than the margin keep the fitted
+// points few: at 32 h, about 2.4 times the sampled blocks' own.
+constexpr double kEndBlock = 32.0;
+constexpr double kEndMargin = 3.0;
 
 // One run of a scene (see scene_run.hpp): the loop over the history's steps,
 // with the measurements each frame and the end take.
@@ -287,7 +314,7 @@ class SceneRunner {
     Stopwatch clock;
     if (!points.empty()) {
       if (local_) {
-        probe(local_->fitted_surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
+        probe_final_local();
       } else {
         surface_->refresh_normals();
         probe(surface_->surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
@@ -315,6 +342,39 @@ class SceneRunner {
                                  " point evaluations (nearly collinear or coplanar handles)");
     if (exact) exact(report_.steps, tracers_);
     report_.wall_seconds = wall_.lap();
+  }
+
+  // Under `local`, F at the final probes: every k-th tracer on the surface
+  // of all the points, or past max_probes tracers, the tracers in sampled
+  // blocks (about max_probes) on the surface of the points near them (kEndBlock):
+  // a fit of a million points' normals would cost more than a few of the run's steps.
+  // Widened supports reach farther than the margin: all the points then.
+  void probe_final_local() {
+    if (options_.max_probes > 0 && tracers_.size() > options_.max_probes && !scene_.widen_support) {
+      const double margin = kEndMargin * scene_.radius_factor * report_.h;
+      const BlockSample<D> blocks(std::max(kEndBlock * report_.h, margin),
+                                  (tracers_.size() + options_.max_probes - 1) / options_.max_probes);
+      const std::vector<std::uint32_t> probe_ids = kept_ids(
+          tracers_.positions, [&](const Vec<D>& p) { return blocks.keyable(p) && blocks.in_sampled(p); }, pool());
+      if (!probe_ids.empty()) {
+        const PointSet<D>& all = points();
+        const std::vector<std::uint32_t> near_ids = kept_ids(
+            all.positions, [&](const Vec<D>& p) { return !blocks.keyable(p) || blocks.near_sampled(p, margin); },
+            pool());
+        PointSet<D> near;
+        near.reserve(near_ids.size());
+        for (const std::uint32_t i : near_ids) near.add(all.positions[i], all.normals[i]);
+        std::vector<Vec<D>> probes;
+        probes.reserve(probe_ids.size());
+        for (const std::uint32_t i : probe_ids) probes.push_back(tracers_.positions[i]);
+        report_.probes = probes.size();
+        report_.final_probes_sampled = true;
+        probe(local_->fitted_surface(std::move(near)), probes, pool(), report_.final_holes,
+              report_.final_probe_max_h);
+        return;
+      }
+    }
+    probe(local_->fitted_surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
   }
 
   void mark_broken(std::size_t step, const std::string& why) {

@@ -27,7 +27,9 @@
 // broken at step k when it no longer covers the exact shape: F is undefined (no
 // point of P reaches it with enough weight) at some probe - one tracer in every
 // tracers_per_point / 4 (sparser beyond SceneRunOptions::max_probes). Every
-// step is probed. With resampling the final surface is probed too, but holes
+// step is probed. With resampling the final surface is probed too (under
+// `local` past max_probes tracers: the tracers in sampled blocks, on the
+// surface of the points near them alone), but holes
 // there are reported, not taken as a breakdown: the resampled surface cannot
 // follow features of the exact shape thinner than the grid (a slot pinched to
 // a fraction of h), and the distances say how much that loses. A resampling
@@ -131,6 +133,7 @@ struct SceneRunReport {
   DistanceStats distance_to_exact_h;
   DistanceStats exact_to_points_h;
   std::size_t final_holes = 0;  // probes where the final F is undefined
+  bool final_probes_sampled = false;  // the final probes are the tracers of sampled blocks (scene_run.cpp)
   double final_probe_max_h = 0.0;
 
   PhaseTimings timings;  // the surface's own work, as in the flow tests

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math/root_finding.hpp"
+#include "core/surface/block_sample.hpp"
 #include "core/surface/spacing_band.hpp"
 #include "core/util/block_join.hpp"
 
@@ -109,14 +110,6 @@ namespace {
 // count and point order.
 constexpr double kSampleBlock = 8.0;
 
-std::uint64_t mixed(std::uint64_t x) {  // splitmix64's finaliser
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
 template <int D>
 void summarise(std::vector<double>& spacings, SpacingSummary& s) {
   s.measured = spacings.size();
@@ -143,8 +136,7 @@ void summarise(std::vector<double>& spacings, SpacingSummary& s) {
 template <int D>
 std::vector<double> block_sample_spacings(const PointSet<D>& points, double h, std::uint64_t every, ThreadPool& pool) {
   const double reach = kSearchRadius * h;
-  const Grid<D> blocks(Vec<D>::Zero(), kSampleBlock * h);
-  auto sampled = [&](const IVec<D>& block) { return mixed(Grid<D>::key(block)) % every == 0; };
+  const BlockSample<D> blocks(kSampleBlock * h, every);
   // Candidates as (id << 1) | (1 if sampled), ids ascending.
   std::vector<OwnCacheLine<std::vector<std::uint64_t>>> parts(static_cast<std::size_t>(pool.threads()));
   pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int block) {
@@ -152,22 +144,12 @@ std::vector<double> block_sample_spacings(const PointSet<D>& points, double h, s
     for (std::size_t i = begin; i < end; ++i) {
       const Vec<D>& p = points.positions[i];
       // Points the block grid cannot key go to the index, which names them.
-      if (!p.allFinite() || !blocks.contains_with_margin(p, 2)) {
+      if (!blocks.keyable(p)) {
         out.push_back(std::uint64_t{i} << 1);
         continue;
       }
-      const IVec<D> own = blocks.cell_of(p);
-      const Vec<D> offset = p - blocks.vertex_position(own);
-      // The blocks within reach: own, and across each face that is near.
-      IVec<D> lo = own, hi = own;
-      for (int a = 0; a < D; ++a) {
-        if (offset[a] < reach) lo[a] -= 1;
-        if (offset[a] > blocks.spacing() - reach) hi[a] += 1;
-      }
-      const bool is_sample = sampled(own);
-      bool near = is_sample;
-      if (!near) for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& b) { near = near || sampled(b); });
-      if (near) out.push_back(std::uint64_t{i} << 1 | (is_sample ? 1 : 0));
+      const bool is_sample = blocks.in_sampled(p);
+      if (is_sample || blocks.near_sampled(p, reach)) out.push_back(std::uint64_t{i} << 1 | (is_sample ? 1 : 0));
     }
   });
   std::vector<std::uint64_t> candidates;
