@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/kd_tree.hpp"
@@ -137,6 +139,30 @@ TEST_CASE("the first row of new points inside a rim is not on the rim") {
   for (const double x : {-2.0, -1.0, 1.0, 2.0}) row.push_back({Vec<3>(x, 0.0, 0.0), 4.5});
   for (const double x : {-1.5, -0.5, 0.5, 1.5}) row.push_back({Vec<3>(x, -1.0, 0.0), 4.5});
   CHECK_FALSE(rim_outward<3>(n, row).has_value());
+}
+
+TEST_CASE("the rim line cuts a sheet curling past it, but not a sheet facing the other way") {
+  // One rim sample at the origin of the plane z = 0, normal +z, outward +x.
+  SurfaceRim<3>::Samples samples;
+  samples.ids = {0};
+  samples.positions = {Vec<3>::Zero()};
+  samples.outward = {Vec<3>::UnitX()};
+  samples.normals = {Vec<3>::UnitZ()};
+  samples.radii = {1.0};
+  const SurfaceRim<3> rim(std::move(samples), Vec<3>(-2.0, -2.0, -2.0));
+  const Vec<3> beyond(0.4, 0.0, -0.1);
+  const auto turned = [](double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    return Vec<3>(std::sin(a), 0.0, std::cos(a));
+  };
+  // A new point beyond the rim whose normal has turned 110 degrees (the
+  // sheet curling down past the rim) is still beyond it ...
+  const std::optional<double> curled = rim.side(beyond, turned(110.0));
+  REQUIRE(curled.has_value());
+  CHECK(*curled == doctest::Approx(0.4));
+  // ... and one on a sheet facing the other way (a thin sheet's far side) is not the rim's.
+  CHECK_FALSE(rim.side(beyond, turned(150.0)).has_value());
+  CHECK_FALSE(rim.side(Vec<3>(3.0, 0.0, 0.0), Vec<3>::UnitZ()).has_value());
 }
 
 TEST_CASE("an open cap's rim samples are its outermost ring; a closed sphere has none") {

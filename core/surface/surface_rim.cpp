@@ -120,7 +120,7 @@ std::optional<double> SurfaceRim<D>::side(const Vec<D>& x, const Vec<D>& normal)
   const IVec<D> cell = index_.cell_of(x);
   index_.for_each_in_cells(IVec<D>(cell.array() - 1), IVec<D>(cell.array() + 1),
                            [&](std::uint32_t k, const Vec<D>& p) {
-                             if (samples_.normals[k].dot(normal) <= 0.0) return;  // another sheet
+                             if (samples_.normals[k].dot(normal) < kRimFacing) return;  // another sheet
                              const Vec<D> d = x - p;
                              const double r = samples_.radii[k];
                              const double w = weight_of_squared_ratio(d.squaredNorm() / (r * r));

@@ -14,9 +14,12 @@
 //
 //   G(x) = sum_i w_i b_i.(x - p_i) / sum_i w_i,   w_i = phi(|x - p_i| / Delta_i),
 //
-// over the rim samples whose support reaches x and whose normal agrees with
-// x's, is the signed distance past the rim line they draw: positive beyond
-// the rim, negative inside; where no rim sample reaches, x is inside.
+// over the rim samples whose support reaches x and whose normal is within
+// 120 degrees of x's (kRimFacing), is the signed distance past the rim line
+// they draw: positive beyond the rim, negative inside; where no rim sample
+// reaches, x is inside. Within 120 and not 90 degrees: a sheet that curls
+// past the rim (normals 95 to 150 degrees from the rim sample's, near an
+// open scan's rim) is cut there too; a thin sheet's far side (about 180) is not.
 // (docs/design.md, "Open surfaces", says why this rule and not others.)
 //
 // Which points to test is decided cheaply during the normals' fits: a
@@ -60,7 +63,8 @@ inline constexpr double kRimReach = 2.0;
 // one. A wider gap is a hole, and its sides are rims.
 inline constexpr double kRimBridge = 1.5;
 // The least cosine between a point's normal and a neighbour's for the
-// neighbour to count (120 degrees).
+// neighbour to count (120 degrees), and between a position's normal and a
+// rim sample's for the sample to count in SurfaceRim::side.
 inline constexpr double kRimFacing = -0.5;
 // The tangential shift of a point's weighted neighbour centroid, in units of
 // its support, above which the angular test is run: a fifth of a
