@@ -6,7 +6,7 @@
 #     e.g. tools/enright_sheets/run.sh 64 10 /tmp/frames 70 100 150 200 260 290
 #
 # Compiles frames.cpp against the static libraries of build/ (configure and
-# `ninja -C build amls` first), writes every EVERY-th frame and the per-step
+# `ninja -C build amls amls_python` first), writes every EVERY-th frame and the per-step
 # figures (DIR/steps.txt), then runs sheets.py on the frames of the STEPs.
 set -euo pipefail
 
@@ -28,4 +28,4 @@ mkdir -p "$dir"
 "$exe" "$grid" "$every" "$dir" > "$dir/steps.txt"
 frames=()
 for step in "$@"; do frames+=("$(printf '%s/f%03d.ply' "$dir" "$step")"); done
-if [[ ${#frames[@]} -gt 0 ]]; then python3 "$here/sheets.py" "$grid" "${frames[@]}"; fi
+if [[ ${#frames[@]} -gt 0 ]]; then PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" python3 "$here/sheets.py" "$grid" "${frames[@]}"; fi

@@ -10,11 +10,15 @@ resampling of the exact shape on that grid would give; and the points
 grouped by how far the nearest point of the sheet's other side (a normal
 more than 120 degrees off) is, each group's share of points on the material
 surface (carried back to t = 0, within 0.01 of the starting sphere, that is
-h/1.56 at 64^3) and off it outward or inward.
+h/1.56 at 64^3) and off it outward or inward, and the mean of F/h at the
+group's own points (F of the frame's surface, as the next resample sees it,
+by the amls module of build/python: negative where F's zero set lies outside
+the points, where that resample moves them outward).
 The flow runs backward after t = 1.5, so the shape at t is the one at 3 - t.
 """
 import sys
 
+import amls
 import numpy as np
 
 CENTER = np.array([0.35, 0.35, 0.35])
@@ -95,13 +99,14 @@ def main():
         points, normals = read_ply(path)
         offset = offset_at_start(points, t)
         other = other_side_distance(points, normals, h)
+        residual = np.asarray(amls.Surface(points, normals, h=h, threads=2).F(points)) / h
         print(f"t = {t:.2f}: {len(points)} points, {exact_sign_changes(points, t, h)} sign changes of the exact shape")
         for low, high in [(0, 1.5), (1.5, 2), (2, 3), (3, np.inf)]:
             group = (other >= low) & (other < high)
             if group.any():
                 print(f"  other side in [{low}, {high}) h: {group.sum():5d} points, on the surface "
                       f"{np.mean(abs(offset[group]) < ON_SURFACE):.2f}, outward {np.mean(offset[group] >= ON_SURFACE):.2f}, "
-                      f"inward {np.mean(offset[group] <= -ON_SURFACE):.2f}")
+                      f"inward {np.mean(offset[group] <= -ON_SURFACE):.2f}, F/h {np.nanmean(residual[group]):+.4f}")
 
 
 if __name__ == "__main__":
