@@ -42,7 +42,7 @@ py::tuple run_scene_file(const std::string& path, const std::string& resample, i
       try {
         return read_scene(path);
       } catch (const FileError&) {
-        throw;  // missing, a directory, unreadable: an OSError
+        throw;  // the scene or its shape file missing, a directory, unreadable: an OSError
       } catch (const std::runtime_error& e) {
         // Not the file but its contents: a key, a value out of range, bad JSON.
         throw std::invalid_argument(e.what());
@@ -77,8 +77,8 @@ sampling quality and the distance to the exact deformed shape.
   max_steps  stop after this many steps (0: all)
 
 Returns the last frame's points and normals and the report: a dict with the keys of
-`amls deform --json`. Raises FileNotFoundError for a missing scene, IsADirectoryError for a
-directory (both OSError), ValueError for a scene whose contents are wrong (the message names the
+`amls deform --json`. Raises FileNotFoundError for a missing scene or shape file it names,
+IsADirectoryError for a directory in their place (both OSError), ValueError for a scene whose contents are wrong (the message names the
 key) and for arguments out of range.)");
 }
 

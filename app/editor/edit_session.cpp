@@ -80,6 +80,7 @@ class Phases {
 template <int D>
 EditSession<D>::EditSession(const InitialShape& shape, int threads, std::size_t undo_bytes)
     : threads_(threads),
+      closed_input_(shape.closed_mesh),
       initial_{from_3d<D>(shape.points), from_3d<D>(shape.handles), regions_of<D>(shape), shape.settings, {}, false,
                SessionRecording<D>(source_of<D>(shape), shape.settings)},
       settings_(shape.settings),

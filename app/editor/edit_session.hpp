@@ -72,6 +72,12 @@ class EditSession {
   std::uint64_t version() const { return version_; }
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
+  // The opened file's input mesh where it is closed (InitialShape::closed_mesh), else null.
+  const TriangleMesh* closed_input() const { return closed_input_.get(); }
+  // A deformation step was taken since the shape was opened or reset (undo
+  // can take it back): then the input mesh no longer describes the surface,
+  // as it does the opened points and their resamples.
+  bool deformed() const { return !recording_.steps().empty(); }
 
   // The surface of the current points, ready for evaluation (the pseudo-normals recomputed).
   const AmlsSurface<D>& evaluable_surface();
@@ -173,6 +179,7 @@ class EditSession {
   DeformingSurface<D>& synced_surface();
 
   int threads_;
+  std::shared_ptr<const TriangleMesh> closed_input_;
   State initial_;
   std::unique_ptr<DeformingSurface<D>> surface_;
   bool surface_behind_ = false;  // the local loop holds newer points than surface_ (it is in sync)

@@ -7,6 +7,7 @@
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/overloaded.hpp"
 #include "app/editor/sampling_quality.hpp"
+#include "core/io/mesh_inside.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
 #include "core/run/scene.hpp"
@@ -23,6 +24,22 @@ Vec<3> to_3d_vector(const Vec<D>& v) {
 }
 
 std::string describe_count(std::size_t n, const char* what) { return std::to_string(n) + " " + what; }
+
+// The session's surface as a mesh. While it is the opened closed mesh's
+// (undeformed: its samples or their resamples), a grid vertex where F is
+// undefined lies on the side the input mesh says, as `amls resample --mesh`
+// decides it (core/run/mesh_export.hpp): a closed mesh in, a closed mesh out.
+template <int D>
+MeshExport export_session_mesh(const std::string& path, EditSession<D>& s) {
+  if constexpr (D == 3) {
+    if (const TriangleMesh* closed = s.closed_input(); closed && !s.deformed()) {
+      const UndefinedSide<3> side = [closed](const Vec<3>& corner) { return inside_mesh(*closed, corner); };
+      return export_surface_mesh(path, s.points(), s.grid(), s.settings().parameters(), s.settings().variant,
+                                 s.pool().threads(), side);
+    }
+  }
+  return export_surface_mesh(path, s.evaluable_surface(), s.settings().variant, s.pool());
+}
 
 }  // namespace
 
@@ -261,9 +278,13 @@ void EditorWorker::export_mesh(const std::string& path) {
   on_session([&](auto& s) {
     try {
       s.map_exactly(WorkControl{});
-      const MeshExport mesh = export_surface_mesh(path, s.evaluable_surface(), s.settings().variant, s.pool());
+      const MeshExport mesh = export_session_mesh(path, s);
+      std::string note;
+      if (s.closed_input() && s.deformed() && !mesh.topology.closed())
+        note = "; where F is undefined it was not capped: the closed input mesh, whose inside caps it, no longer "
+               "describes the deformed surface (undo back to the opened surface to export it closed)";
       message(mesh.topology.closed() ? Message::Level::info : Message::Level::warning,
-              "Exported a mesh of " + mesh.summary() + " to " + path);
+              "Exported a mesh of " + mesh.summary() + " to " + path + note);
     } catch (const std::exception& e) {
       message(Message::Level::error, std::string("Mesh export failed (any previous file is intact): ") + e.what());
     }

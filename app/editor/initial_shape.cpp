@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include "app/editor/scene_start.hpp"
@@ -109,6 +110,7 @@ InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const Lo
   shape.points = std::move(opened.points);
   shape.name = std::filesystem::path(path).filename().string();
   shape.warnings = std::move(opened.warnings);
+  if (opened.closed_mesh) shape.closed_mesh = std::make_shared<const TriangleMesh>(std::move(*opened.closed_mesh));
   shape.opened = path + ": " + opened.source + "; h = " + format_number(shape.settings.spacing) + ": " +
                  opened.spacing.reason;
   pool.poll_cancel();

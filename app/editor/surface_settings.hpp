@@ -1,6 +1,7 @@
 #pragma once
 // What the editor computes its surface with, and where the initial shape came
 // from (as a scene says it: docs/scene-format.md). No GL.
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "core/deform/mls_deformation.hpp"
 #include "core/deform/region_handle.hpp"
 #include "core/geometry/point_set.hpp"
+#include "core/io/mesh_io.hpp"
 #include "core/resample/resample_policy.hpp"
 #include "core/resample/resampler.hpp"
 #include "core/run/scene.hpp"
@@ -68,6 +70,10 @@ struct InitialShape {
   bool coverage_loss = false;
   // A shape file opened on its own: what was read and done, and why h ("" otherwise).
   std::string opened;
+  // A mesh file opened on its own, where it is closed and consistently wound
+  // (SurfaceSamples::closed_mesh): its inside closes Export Mesh where F is
+  // undefined, as `amls resample --mesh` does. Shared: shapes are copied.
+  std::shared_ptr<const TriangleMesh> closed_mesh;
 
   // The source's dimension is the shape's: one fact, kept once.
   int dimension() const { return std::holds_alternative<SceneShape<2>>(source) ? 2 : 3; }

@@ -1,6 +1,7 @@
 #include "core/run/scene.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +38,11 @@ class Place {
   const std::string& where() const { return where_; }
   [[noreturn]] void fail(const std::string& what) const {
     throw std::runtime_error(*file_ + ": " + (where_.empty() ? "" : where_ + ": ") + what);
+  }
+  // A file the scene names that is not there: the same message, as the
+  // FileError of `error` (ENOENT, EISDIR), which tells it from wrong contents.
+  [[noreturn]] void fail_file(const std::string& what, int error) const {
+    throw FileError(*file_ + ": " + (where_.empty() ? "" : where_ + ": ") + what, error);
   }
   // For a message that names its place itself.
   [[noreturn]] void fail_in_file(const std::string& what) const { throw std::runtime_error(*file_ + ": " + what); }
@@ -241,8 +247,10 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
       if (!shape_file_format(shape.file))
         path_at.fail("unknown file type '" + lower_extension(shape.file) + "' (expected " + kShapeFileExtensions + ")");
       std::error_code error;
+      if (fs::is_directory(shape.resolved_file, error))
+        path_at.fail_file("is a directory, not a shape file: " + shape.resolved_file, EISDIR);
       if (!fs::is_regular_file(shape.resolved_file, error))
-        path_at.fail("no such file: " + shape.resolved_file + " (paths are relative to the scene file)");
+        path_at.fail_file("no such file: " + shape.resolved_file + " (paths are relative to the scene file)", ENOENT);
       break;
     }
   }

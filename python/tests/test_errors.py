@@ -146,3 +146,14 @@ def test_run_scene_tells_files_from_their_contents(amls, files):
                              ("bad.json", ValueError), ("broken.json", ValueError)):
         message = cli_error("deform", path)
         assert str(raised(error_type, lambda: amls.run_scene(path)).value) == message, path
+
+
+def test_run_scene_raises_os_errors_for_a_shape_file_that_is_not_there(amls, files):
+    os.mkdir("shape.ply")
+    for shape_path, error_type, words in (("gone.ply", FileNotFoundError, "shape.path: no such file: "),
+                                          ("shape.ply", IsADirectoryError, "shape.path: is a directory, not a shape file: ")):
+        scene = {"dimension": 3, "shape": {"type": "file", "path": shape_path}, "stages": []}
+        (files / "uses.json").write_text(json.dumps(scene))
+        message = cli_error("deform", "uses.json")
+        assert words in message
+        assert str(raised(error_type, lambda: amls.run_scene("uses.json")).value) == message, shape_path
