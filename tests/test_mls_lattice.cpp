@@ -166,6 +166,30 @@ TEST_CASE("MLS rest lattice: built once over the rest points, maps them to every
   CHECK_THROWS_AS(lattice.map(drag(sphere.h), fewer, out, nullptr, nullptr, sphere.pool), std::invalid_argument);
 }
 
+TEST_CASE("MLS rest lattice: each point's image is its own, whatever the points' order") {
+  // The points are mapped cell by cell: each must still land at its own index.
+  RestSphere sphere;
+  PointSet<3> reversed = sphere.rest;
+  std::reverse(reversed.positions.begin(), reversed.positions.end());
+  std::reverse(reversed.normals.begin(), reversed.normals.end());
+  const MlsRestLattice<3> lattice = sphere.lattice(0.001);
+  const MlsRestLattice<3> reversed_lattice(reversed, sphere.options(0.001), sphere.pool);
+  const MlsDeformation<3> map(drag(0.0).from(), drag(5.0 * sphere.h).to());
+  PointSet<3> mapped, reversed_mapped;
+  const MlsLatticeStats stats = lattice.map(map, sphere.rest, mapped, nullptr, nullptr, sphere.pool);
+  reversed_lattice.map(map, reversed, reversed_mapped, nullptr, nullptr, sphere.pool);
+  CHECK(stats.refined_cells > 0);  // both kinds of cells are read
+  const std::size_t n = sphere.rest.size();
+  REQUIRE(reversed_mapped.size() == n);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (reversed_mapped.positions[n - 1 - i] != mapped.positions[i] ||
+        reversed_mapped.normals[n - 1 - i] != mapped.normals[i])
+      ++differ;
+  CHECK(differ == 0);
+  CHECK(mapped.positions != sphere.rest.positions);
+}
+
 // How many of the 8 h cells holding `points` (aligned as the lattice's)
 // would fail the centre check if their nodes' images were interpolated
 // multilinearly.

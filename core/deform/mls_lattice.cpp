@@ -92,12 +92,17 @@ struct Box {
   // The cell holding x (clamped into the box within its margin) and x's place in it, each coordinate in [0, 1].
   IVec<D> locate(const Vec<D>& x, Vec<D>& t) const {
     IVec<D> c;
-    for (int a = 0; a < D; ++a) {
-      const double u = (x[a] - origin[a]) / spacing;
-      c[a] = std::clamp(static_cast<std::int64_t>(std::floor(u)), margin, cells[a] - 1 - margin);
-      t[a] = std::clamp(u - static_cast<double>(c[a]), 0.0, 1.0);
-    }
+    for (int a = 0; a < D; ++a)
+      c[a] = std::clamp(static_cast<std::int64_t>(std::floor(across(x, a))), margin, cells[a] - 1 - margin);
+    t = place_in(c, x);
     return c;
+  }
+  // x's place in cell c, as locate() gives it when c is the cell it found:
+  // a caller that knows the cell spares the floors.
+  Vec<D> place_in(const IVec<D>& c, const Vec<D>& x) const {
+    Vec<D> t;
+    for (int a = 0; a < D; ++a) t[a] = std::clamp(across(x, a) - static_cast<double>(c[a]), 0.0, 1.0);
+    return t;
   }
   Vec<D> node_position(const IVec<D>& n) const { return origin + spacing * n.template cast<double>(); }
   // Whether x lies within `reach` cells of cell c.
@@ -110,6 +115,8 @@ struct Box {
   }
 
  private:
+  // x's coordinate along axis a, in cells from the origin.
+  double across(const Vec<D>& x, int a) const { return (x[a] - origin[a]) / spacing; }
   std::size_t index_in(const IVec<D>& v, std::int64_t extra) const {
     std::size_t index = 0;
     for (int a = D - 1; a >= 0; --a)
@@ -144,11 +151,21 @@ struct RegionLayout {
   }
 };
 
-// The multilinear weight of corner v at t in [0, 1]^D.
+// The multilinear weight of each corner v at t in [0, 1]^D: the product
+// over the axes, in order, of t or 1 - t as v's bit for the axis is set or
+// not, the lower axes' products shared between the corners that have them
+// in common.
 template <int D>
-double corner_weight(int v, const Vec<D>& t) {
-  double w = 1.0;
-  for (int a = 0; a < D; ++a) w *= (v >> a) & 1 ? t[a] : 1.0 - t[a];
+std::array<double, 1 << D> corner_weights(const Vec<D>& t) {
+  std::array<double, 1 << D> w;
+  w[0] = 1.0;
+  for (int a = 0; a < D; ++a) {
+    const std::size_t below = std::size_t{1} << a;
+    for (std::size_t v = 0; v < below; ++v) {
+      w[v + below] = w[v] * t[a];
+      w[v] *= 1.0 - t[a];
+    }
+  }
   return w;
 }
 
@@ -156,9 +173,10 @@ double corner_weight(int v, const Vec<D>& t) {
 // mean of the multilinear interpolant and the Taylor blend), the normals'
 // transform multilinearly.
 template <int D>
-Sample<D> interpolate(const Corners<D>& corners, const Vec<D>& t, const Vec<D>& x) {
-  Blend<D> sum = corner_weight<D>(0, t) * corners[0]->blend;
-  for (int v = 1; v < (1 << D); ++v) sum += corner_weight<D>(v, t) * corners[static_cast<std::size_t>(v)]->blend;
+[[gnu::always_inline]] inline Sample<D> interpolate(const Corners<D>& corners, const Vec<D>& t, const Vec<D>& x) {
+  const std::array<double, 1 << D> w = corner_weights<D>(t);
+  Blend<D> sum = w[0] * corners[0]->blend;
+  for (std::size_t v = 1; v < w.size(); ++v) sum += w[v] * corners[v]->blend;
   return {sum.template head<D>() + half_jacobian_of<D>(sum) * x, sum.template tail<D * D>().reshaped(D, D)};
 }
 
@@ -232,9 +250,9 @@ Refined<D> refine(const MlsDeformation<D>& map, const Box<D>& coarse, const IVec
     r.nodes.slot[r.box.node_index(n)] = static_cast<std::int32_t>(r.nodes.nodes.size());
     const Vec<D> x = r.box.node_position(n);
     const Vec<D> t = n.template cast<double>() / static_cast<double>(o.refinement);
+    const std::array<double, 1 << D> w = corner_weights<D>(t);
     Mat<D> half_jacobian = Mat<D>::Zero();
-    for (int v = 0; v < (1 << D); ++v)
-      half_jacobian += corner_weight<D>(v, t) * half_jacobian_of<D>(corners[static_cast<std::size_t>(v)]->blend);
+    for (std::size_t v = 0; v < w.size(); ++v) half_jacobian += w[v] * half_jacobian_of<D>(corners[v]->blend);
     const Sample<D> exact = exact_sample(map, x);
     r.nodes.nodes.push_back({x, exact.position, make_blend<D>(x, exact.position, half_jacobian, exact.normals)});
   });
@@ -555,33 +573,36 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   std::vector<std::size_t> exact_points(static_cast<std::size_t>(pool.threads()), 0);
   mapped.positions.resize(n);
   mapped.normals.resize(n);
-  pool.parallel_for(n, [&](std::size_t begin, std::size_t end, int block) {
+  // Cell by cell: a cell's corners are looked up once for all its points,
+  // and its refinement checked once.
+  pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int block) {
     std::size_t exact_here = 0;
     Vec<D> t;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec<D> p = points.positions[i];
-      const std::uint32_t k = l.point_cell[i];
+    for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t r = refined_of[k];
-      Sample<D> sample;
-      if (holder[i] != kHeldByNone) {
-        const MlsLocalMap<D> on = map.region_map(holder[i], p);
-        sample = {on.position, normal_transform<D>(on.linear)};
-        ++exact_here;
-      } else if (r == kInterpolated) {
-        box.locate(p, t);
-        sample = interpolate<D>(l.corners(nodes, k), t, p);
-      } else {
-        const Refined<D>& cell = refined[r];
-        const IVec<D> s = cell.box.locate(p, t);
-        if (cell.exact[cell.box.cell_index(s)]) {
-          sample = exact_sample(map, p);
+      const Corners<D> corners = l.corners(nodes, k);
+      for (const std::uint32_t i : l.points_of(k)) {
+        const Vec<D> p = points.positions[i];
+        Sample<D> sample;
+        if (holder[i] != kHeldByNone) {
+          const MlsLocalMap<D> on = map.region_map(holder[i], p);
+          sample = {on.position, normal_transform<D>(on.linear)};
           ++exact_here;
+        } else if (r == kInterpolated) {
+          sample = interpolate<D>(corners, box.place_in(l.cells[k], p), p);
         } else {
-          sample = interpolate<D>(cell.nodes.corners(cell.box, s), t, p);
+          const Refined<D>& cell = refined[r];
+          const IVec<D> s = cell.box.locate(p, t);
+          if (cell.exact[cell.box.cell_index(s)]) {
+            sample = exact_sample(map, p);
+            ++exact_here;
+          } else {
+            sample = interpolate<D>(cell.nodes.corners(cell.box, s), t, p);
+          }
         }
+        mapped.positions[i] = sample.position;
+        mapped.normals[i] = transform_normal<D>(sample.normals, points.normals[i]);
       }
-      mapped.positions[i] = sample.position;
-      mapped.normals[i] = transform_normal<D>(sample.normals, points.normals[i]);
     }
     exact_points[static_cast<std::size_t>(block)] += exact_here;
   });
