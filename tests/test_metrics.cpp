@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
+#include "core/surface/block_sample.hpp"
 #include "core/surface/metrics.hpp"
 #include "core/geometry/shapes.hpp"
 #include "surface_fixtures.hpp"
@@ -164,4 +166,63 @@ TEST_CASE("metrics: nearest distances on a pool have the same bits for any threa
     CHECK(d.mean == serial.mean);
     CHECK(d.max == serial.max);
   }
+}
+
+TEST_CASE("metrics: nearest distances from a block sample: each the exact one, the same for any thread count") {
+  const double h = 0.01;
+  const PointSet<3> sphere = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.3, 30000);
+  const PointSet<3> bigger = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.305, 20000);
+  ThreadPool one(1), three(3);
+  const DistanceStats all = nearest_distance_stats(sphere.positions, bigger.positions, h, three);
+  SUBCASE("no more than max_measured: every point, as without a limit") {
+    const DistanceStats d = nearest_distance_stats(sphere.positions, bigger.positions, h, sphere.size(), three);
+    CHECK(d.count == all.count);
+    CHECK(d.mean == all.mean);
+    CHECK(d.max == all.max);
+  }
+  SUBCASE("a sample of about max_measured, within the whole set's figures") {
+    const DistanceStats d = nearest_distance_stats(sphere.positions, bigger.positions, h, 3000, one);
+    CHECK(d.count > 300);
+    CHECK(d.count < 10000);
+    // Each sampled distance is a point's exact one: the largest at most all points' largest.
+    CHECK(d.max <= all.max);
+    CHECK(d.max > 0.5 * all.max);
+    // The radii are 0.5 h apart and the bigger sphere's points about 1.2 h: the mean of a
+    // sample spread over the sphere is within a few percent of all points' (here 0.76 h).
+    CHECK(d.mean == doctest::Approx(all.mean).epsilon(0.05));
+    const DistanceStats t = nearest_distance_stats(sphere.positions, bigger.positions, h, 3000, three);
+    CHECK(t.count == d.count);
+    CHECK(t.mean == d.mean);
+    CHECK(t.max == d.max);
+  }
+  SUBCASE("sampled points with nothing within 2 h are measured against every point") {
+    const PointSet<3> far = sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.35, 20000);  // 5 h out
+    const DistanceStats whole = nearest_distance_stats(sphere.positions, far.positions, h, three);
+    const DistanceStats d = nearest_distance_stats(sphere.positions, far.positions, h, 3000, three);
+    CHECK(d.count > 300);
+    CHECK(d.max <= whole.max);
+    CHECK(d.mean == doctest::Approx(whole.mean).epsilon(0.05));
+    CHECK(d.mean > 4.9);
+  }
+}
+
+TEST_CASE("metrics: a block sample's blocks are those whose hash is a multiple of `every`") {
+  // The sample tests divisibility by a multiplication (block_sample.hpp): the
+  // blocks it takes must be those a remainder would.
+  for (const std::uint64_t every : {1ULL, 2ULL, 3ULL, 7ULL, 10ULL, 50ULL, 64ULL, 96ULL, 1000003ULL}) {
+    const BlockSample<3> sample(1.0, every);
+    std::size_t taken = 0, wrong = 0;
+    for (std::int64_t x = -20; x < 20; ++x)
+      for (std::int64_t y = -20; y < 20; ++y)
+        for (std::int64_t z = -5; z < 5; ++z) {
+          const IVec<3> block(x, y, z);
+          const bool expected = block_hash(Grid<3>::key(block)) % every == 0;
+          wrong += sample.sampled(block) == expected ? 0 : 1;
+          taken += expected ? 1 : 0;
+        }
+    CAPTURE(every);
+    CHECK(wrong == 0);
+    if (every <= 100) CHECK(taken > 16000 / every / 2);  // the hash spreads the sample
+  }
+  CHECK_THROWS_AS(BlockSample<3>(1.0, 0), std::invalid_argument);
 }

@@ -154,7 +154,7 @@ TEST_CASE("scene run: frames larger than the spacing sample are measured on it, 
   CHECK(r.distance_to_exact_h.mean == whole.distance_to_exact_h.mean);
 }
 
-TEST_CASE("scene run: the end's two-way distances measure from at most max_probes points of each set") {
+TEST_CASE("scene run: the end's two-way distances measure from a block sample of about max_probes points of each set") {
   const Scene<2> scene = short_clover();
   SceneRunOptions options;
   options.tracers_per_point = 4;
@@ -165,10 +165,11 @@ TEST_CASE("scene run: the end's two-way distances measure from at most max_probe
   const SceneRunReport r = run_scene<2>(scene, options);
   REQUIRE(r.points_final == whole.points_final);  // the measure changes nothing of the run
   REQUIRE(r.points_final > 40);
-  CHECK(r.distance_to_exact_h.count <= 40);
-  CHECK(r.distance_to_exact_h.count >= 20);
-  CHECK(r.exact_to_points_h.count <= 40);
-  CHECK(r.exact_to_points_h.count >= 20);
+  // The points of blocks 8 h wide, one block in ceil(size / 40): a few blocks' points.
+  CHECK(r.distance_to_exact_h.count < whole.distance_to_exact_h.count / 2);
+  CHECK(r.distance_to_exact_h.count > 0);
+  CHECK(r.exact_to_points_h.count < whole.exact_to_points_h.count / 2);
+  CHECK(r.exact_to_points_h.count > 0);
   // Each sampled distance is one of the whole run's, so the sample's largest is at most theirs.
   CHECK(r.distance_to_exact_h.max <= whole.distance_to_exact_h.max);
   CHECK(r.exact_to_points_h.max <= whole.exact_to_points_h.max);

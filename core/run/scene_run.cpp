@@ -12,7 +12,6 @@
 #include "core/run/settle.hpp"
 #include "core/surface/block_sample.hpp"
 #include "core/surface/spacing_band.hpp"
-#include "core/util/block_join.hpp"
 #include "core/util/stopwatch.hpp"
 
 namespace amls {
@@ -52,19 +51,6 @@ void probe(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& probes, Thr
     holes += f.value.holes;
     max_h = std::max(max_h, f.value.max_h);
   }
-}
-
-// The ids of the positions that `keep` accepts, ascending, on the pool.
-template <int D, typename Keep>
-std::vector<std::uint32_t> kept_ids(const std::vector<Vec<D>>& positions, Keep keep, ThreadPool& pool) {
-  std::vector<OwnCacheLine<std::vector<std::uint32_t>>> parts(static_cast<std::size_t>(pool.threads()));
-  pool.parallel_for(positions.size(), [&](std::size_t begin, std::size_t end, int block) {
-    for (std::size_t i = begin; i < end; ++i)
-      if (keep(positions[i])) parts[static_cast<std::size_t>(block)].value.push_back(static_cast<std::uint32_t>(i));
-  });
-  std::vector<std::uint32_t> ids;
-  join_blocks(parts, ids, pool);
-  return ids;
 }
 
 // The end's probes of a large run lie in blocks of this side (in h, or the
@@ -185,12 +171,6 @@ class SceneRunner {
   ThreadPool& pool() { return local_ ? local_->pool() : surface_->pool(); }
 
   std::vector<Vec<D>> probes() const { return every_kth(tracers_.positions, probe_stride_); }
-
-  // Every k-th of `positions`, k as small as keeps them to max_probes.
-  std::vector<Vec<D>> capped_sample(const std::vector<Vec<D>>& positions) const {
-    if (options_.max_probes == 0 || positions.size() <= options_.max_probes) return positions;
-    return every_kth(positions, (positions.size() + options_.max_probes - 1) / options_.max_probes);
-  }
 
   static std::vector<Vec<D>> every_kth(const std::vector<Vec<D>>& positions, std::size_t k) {
     std::vector<Vec<D>> out;
@@ -319,12 +299,14 @@ class SceneRunner {
         surface_->refresh_normals();
         probe(surface_->surface(), probes(), pool(), report_.final_holes, report_.final_probe_max_h);
       }
-      // From every k-th point of each set, at most max_probes of them: a
-      // million nearest searches each way would cost more than the run's last steps.
+      // From a block sample of each set, at most about max_probes points
+      // of it, against the other set's points near the sampled blocks: a
+      // million nearest searches each way, or an index of a million points,
+      // would cost more than the run's last steps.
       report_.distance_to_exact_h =
-          nearest_distance_stats(capped_sample(points.positions), tracers_.positions, report_.h, pool());
+          nearest_distance_stats(points.positions, tracers_.positions, report_.h, options_.max_probes, pool());
       report_.exact_to_points_h =
-          nearest_distance_stats(capped_sample(tracers_.positions), points.positions, report_.h, pool());
+          nearest_distance_stats(tracers_.positions, points.positions, report_.h, options_.max_probes, pool());
     }
     if (report_.final_holes > 0 && !options_.resample)
       mark_broken(report_.steps, "the final surface does not cover the exact shape: F is undefined at " +
@@ -354,19 +336,16 @@ class SceneRunner {
       const double margin = kEndMargin * scene_.radius_factor * report_.h;
       const BlockSample<D> blocks(std::max(kEndBlock * report_.h, margin),
                                   (tracers_.size() + options_.max_probes - 1) / options_.max_probes);
-      const std::vector<std::uint32_t> probe_ids = kept_ids(
-          tracers_.positions, [&](const Vec<D>& p) { return blocks.keyable(p) && blocks.in_sampled(p); }, pool());
-      if (!probe_ids.empty()) {
+      std::vector<Vec<D>> probes;
+      for (const auto& t : blocks.placed(tracers_.positions, 0.0, pool()))
+        if (t.place == BlockPlace::inside) probes.push_back(tracers_.positions[t.id]);
+      if (!probes.empty()) {
         const PointSet<D>& all = points();
-        const std::vector<std::uint32_t> near_ids = kept_ids(
-            all.positions, [&](const Vec<D>& p) { return !blocks.keyable(p) || blocks.near_sampled(p, margin); },
-            pool());
+        // The points within the margin of the sampled blocks, and any the block grid cannot key.
+        const auto near_ids = blocks.placed(all.positions, margin, pool());
         PointSet<D> near;
         near.reserve(near_ids.size());
-        for (const std::uint32_t i : near_ids) near.add(all.positions[i], all.normals[i]);
-        std::vector<Vec<D>> probes;
-        probes.reserve(probe_ids.size());
-        for (const std::uint32_t i : probe_ids) probes.push_back(tracers_.positions[i]);
+        for (const auto& p : near_ids) near.add(all.positions[p.id], all.normals[p.id]);
         report_.probes = probes.size();
         report_.final_probes_sampled = true;
         probe(local_->fitted_surface(std::move(near)), probes, pool(), report_.final_holes,

@@ -62,7 +62,8 @@ struct SceneRunOptions {
   std::size_t spacing_sample = kDefaultSpacingSample;
   // Probes: one tracer in every tracers_per_point / 4, and at most this many
   // (0: no limit). The end's two-way distances (final points to tracers and
-  // back) measure from at most this many of each set too, every k-th.
+  // back) measure from about this many of each set too, the points of
+  // blocks sampled as a frame's spacing sample is (metrics.hpp).
   std::size_t max_probes = 100000;
 };
 

@@ -127,63 +127,68 @@ void summarise(std::vector<double>& spacings, SpacingSummary& s) {
   }
 }
 
-// The spacings of the points in sampled blocks (one block in `every`). Only
-// the points within `reach` = 2h of a sampled block (the candidates) are
-// indexed, in one light pass over the set: a sampled point's nearest within
-// reach is then among them, so its spacing is exact. A sampled point with no
-// candidate within reach (a gap wider than 2h) is measured against every
-// point, with an index of them all, as an unsampled frame is.
+// The nearest distances in h from the points of `from` in sampled blocks
+// (one block in `every`) to the points of `to` (with `same`, `from` is `to`
+// and a point's distance is to its nearest other point), in from's order.
+// Only the points of `to` within `reach` = 2h of a sampled block (the
+// candidates) are indexed, found in one light pass over the set: a sampled
+// point's nearest within reach is then among them, so its distance is exact.
+// A sampled point with no candidate within reach (a gap wider than 2h) is
+// measured against every point of `to`, with an index of them all.
 template <int D>
-std::vector<double> block_sample_spacings(const PointSet<D>& points, double h, std::uint64_t every, ThreadPool& pool) {
+std::vector<double> block_sample_nearest(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, bool same,
+                                         double h, std::uint64_t every, ThreadPool& pool) {
   const double reach = kSearchRadius * h;
   const BlockSample<D> blocks(kSampleBlock * h, every);
-  // Candidates as (id << 1) | (1 if sampled), ids ascending.
-  std::vector<OwnCacheLine<std::vector<std::uint64_t>>> parts(static_cast<std::size_t>(pool.threads()));
-  pool.parallel_for(points.size(), [&](std::size_t begin, std::size_t end, int block) {
-    std::vector<std::uint64_t>& out = parts[static_cast<std::size_t>(block)].value;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec<D>& p = points.positions[i];
-      // Points the block grid cannot key go to the index, which names them.
-      if (!blocks.keyable(p)) {
-        out.push_back(std::uint64_t{i} << 1);
-        continue;
-      }
-      const bool is_sample = blocks.in_sampled(p);
-      if (is_sample || blocks.near_sampled(p, reach)) out.push_back(std::uint64_t{i} << 1 | (is_sample ? 1 : 0));
-    }
-  });
-  std::vector<std::uint64_t> candidates;
-  join_blocks(parts, candidates, pool);
+  using Placed = typename BlockSample<D>::Placed;
+  const std::vector<Placed> candidates = blocks.placed(to, reach, pool);
   std::vector<Vec<D>> positions(candidates.size());
   pool.parallel_for(candidates.size(), [&](std::size_t begin, std::size_t end, int) {
-    for (std::size_t k = begin; k < end; ++k) positions[k] = points.positions[candidates[k] >> 1];
+    for (std::size_t k = begin; k < end; ++k) positions[k] = to[candidates[k].id];
   });
+  // The measured points: with `same`, the candidates inside sampled blocks
+  // (named by their place among the candidates, to skip themselves), else
+  // those of `from`.
+  std::vector<Placed> measured;
+  if (same) {
+    measured.reserve(candidates.size());
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+      if (candidates[k].place == BlockPlace::inside) measured.push_back({static_cast<std::uint32_t>(k), BlockPlace::inside});
+  } else {
+    for (const Placed& p : blocks.placed(from, 0.0, pool))
+      if (p.place == BlockPlace::inside) measured.push_back(p);
+  }
+  auto at = [&](const Placed& m) -> const Vec<D>& { return same ? positions[m.id] : from[m.id]; };
   PointIndex<D> index;
   index.build(positions, Vec<D>::Zero(), kSearchCell * h, pool);
-  // Per block: the sampled candidates' spacings, and the ids of those without a neighbour within reach.
-  std::vector<OwnCacheLine<std::vector<double>>> found(parts.size());
-  std::vector<OwnCacheLine<std::vector<std::uint64_t>>> far(parts.size());
-  pool.parallel_for(candidates.size(), [&](std::size_t begin, std::size_t end, int block) {
+  // A NaN marks the points without a candidate within reach.
+  std::vector<double> nearest(measured.size());
+  pool.parallel_for(measured.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      if ((candidates[k] & 1) == 0) continue;
+      const std::uint32_t self = same ? measured[k].id : std::numeric_limits<std::uint32_t>::max();
+      const Vec<D>& p = at(measured[k]);
       double best2 = std::numeric_limits<double>::infinity();
-      index.for_each_within(positions[k], reach, [&](std::uint32_t id, const Vec<D>& q) {
-        if (id != k) best2 = std::min(best2, (q - positions[k]).squaredNorm());
+      index.for_each_within(p, reach, [&](std::uint32_t id, const Vec<D>& q) {
+        if (id != self) best2 = std::min(best2, (q - p).squaredNorm());
       });
-      if (std::isfinite(best2)) found[static_cast<std::size_t>(block)].value.push_back(std::sqrt(best2) / h);
-      else far[static_cast<std::size_t>(block)].value.push_back(candidates[k] >> 1);
+      nearest[k] = std::isfinite(best2) ? std::sqrt(best2) / h : std::numeric_limits<double>::quiet_NaN();
     }
   });
-  std::vector<double> spacings;
-  join_blocks(found, spacings, pool);
-  std::vector<std::uint64_t> far_ids;
-  join_blocks(far, far_ids, pool);
-  if (!far_ids.empty()) {
-    const std::vector<double> wide = nearest_spacings_of(
-        points, h, far_ids.size(), [&](std::size_t k) { return static_cast<std::size_t>(far_ids[k]); }, pool);
-    spacings.insert(spacings.end(), wide.begin(), wide.end());
+  std::vector<std::size_t> far;
+  for (std::size_t k = 0; k < nearest.size(); ++k)
+    if (std::isnan(nearest[k])) far.push_back(k);
+  if (!far.empty()) {
+    PointIndex<D> whole;
+    whole.build(to, Vec<D>::Zero(), kSearchCell * h, pool);
+    pool.parallel_for(far.size(), [&](std::size_t begin, std::size_t end, int) {
+      for (std::size_t f = begin; f < end; ++f) {
+        const Placed& m = measured[far[f]];
+        const std::uint32_t self = same ? candidates[m.id].id : std::numeric_limits<std::uint32_t>::max();
+        nearest[far[f]] = std::sqrt(nearest_squared(whole, to, at(m), kSearchRadius * h, self)) / h;
+      }
+    });
   }
-  return spacings;
+  return nearest;
 }
 
 }  // namespace
@@ -196,7 +201,7 @@ SpacingSummary spacing_summary(const PointSet<D>& points, double h, std::size_t 
   std::vector<double> spacings;
   if (points.size() > max_measured) {
     const std::uint64_t every = (points.size() + max_measured - 1) / std::max<std::size_t>(max_measured, 1);
-    spacings = block_sample_spacings(points, h, every, pool);
+    spacings = block_sample_nearest(points.positions, points.positions, true, h, every, pool);
   }
   // A small set, or a sample that fell on no point (a few points far apart): every point.
   if (spacings.empty())
@@ -243,6 +248,26 @@ DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std:
 }
 
 template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h,
+                                     std::size_t max_measured, ThreadPool& pool) {
+  if (max_measured == 0 || from.size() <= max_measured) return nearest_distance_stats(from, to, h, pool);
+  if (to.empty()) throw std::invalid_argument("nearest distances: the set to measure against is empty");
+  const std::vector<double> nearest =
+      block_sample_nearest(from, to, false, h, (from.size() + max_measured - 1) / max_measured, pool);
+  // A sample that fell on no point (a few points far apart): every point.
+  if (nearest.empty()) return nearest_distance_stats(from, to, h, pool);
+  DistanceStats s;
+  double sum = 0.0;  // in from's order, whatever the thread count
+  for (const double d : nearest) {
+    sum += d;
+    s.max = std::max(s.max, d);
+  }
+  s.count = nearest.size();
+  s.mean = sum / static_cast<double>(nearest.size());
+  return s;
+}
+
+template <int D>
 DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h) {
   ThreadPool one(1);
   return nearest_distance_stats(from, to, h, one);
@@ -262,6 +287,10 @@ template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, con
                                                  ThreadPool&);
 template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double,
                                                  ThreadPool&);
+template DistanceStats nearest_distance_stats<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double,
+                                                 std::size_t, ThreadPool&);
+template DistanceStats nearest_distance_stats<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double,
+                                                 std::size_t, ThreadPool&);
 template SpacingSummary spacing_summary<2>(const PointSet<2>&, double, std::size_t, ThreadPool&);
 template SpacingSummary spacing_summary<3>(const PointSet<3>&, double, std::size_t, ThreadPool&);
 

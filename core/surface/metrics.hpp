@@ -64,6 +64,17 @@ DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std:
 template <int D>
 DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h,
                                      ThreadPool& pool);
+// The same from a sample of `from` where it has more than max_measured
+// points (0: no limit): its points in the blocks spacing_summary would sample
+// a frame of its size by (one in ceil(size / max_measured), about
+// max_measured points), each at its exact distance to the nearest of `to`;
+// only the points of `to` within 2 h of the sampled blocks are indexed (a
+// sampled point with none that near is measured against all of them). The
+// same figures for any thread count. Every point of `from` when they are at
+// most max_measured, or when the sample falls on none.
+template <int D>
+DistanceStats nearest_distance_stats(const std::vector<Vec<D>>& from, const std::vector<Vec<D>>& to, double h,
+                                     std::size_t max_measured, ThreadPool& pool);
 
 // How the zero set of F meets rays cast from a centre. 2D: one closed curve
 // around the centre is crossed exactly once by every ray (the paper's test is
