@@ -20,17 +20,6 @@ namespace {
 // samples: a cube at 32 cells has some 6,000.
 constexpr double kMinMeshCells = 32.0;
 
-// The longest side of the box around the positions.
-template <int D>
-double longest_side(const std::vector<Vec<D>>& positions) {
-  Vec<D> low = positions.front(), high = positions.front();
-  for (const Vec<D>& p : positions) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  return (high - low).maxCoeff();
-}
-
 // h for the file as read, and the cost of a resampling at it.
 template <int D>
 SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& given) {
