@@ -1,9 +1,12 @@
 #pragma once
 // Small triangle meshes for the mesh tests.
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cstdint>
 #include <map>
 #include <utility>
+#include <vector>
 
 #include "core/io/mesh_io.hpp"
 
@@ -58,6 +61,15 @@ inline TriangleMesh lattice_box_mesh(const Vec<3>& lo, const std::array<int, 3>&
         }
   }
   return m;
+}
+
+// The volume a closed triangle mesh encloses, by the divergence theorem:
+// positive when its triangles face outwards.
+inline double enclosed_volume(const std::vector<Vec<3>>& vertices,
+                              const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  double six_volume = 0.0;
+  for (const auto& t : triangles) six_volume += vertices[t[0]].dot(vertices[t[1]].cross(vertices[t[2]]));
+  return six_volume / 6.0;
 }
 
 }  // namespace amls::test

@@ -20,6 +20,7 @@
 #include "core/io/point_set_io.hpp"
 #include "core/resample/mesh_extraction.hpp"
 #include "core/run/mesh_export.hpp"
+#include "mesh_fixtures.hpp"
 #include "surface_fixtures.hpp"
 #include "temp_dir.hpp"
 
@@ -39,14 +40,7 @@ ExtractedMesh<D> mesh_of(const PointSet<D>& points, double h, Variant variant, i
   return extract_mesh(surface, variant, pool);
 }
 
-// The volume a closed triangle mesh encloses, by the divergence theorem:
-// positive when its triangles face outwards.
-double enclosed_volume(const SurfaceMesh<3>& mesh) {
-  double six_volume = 0.0;
-  for (const auto& t : mesh.cells)
-    six_volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]]));
-  return six_volume / 6.0;
-}
+double enclosed_volume(const SurfaceMesh<3>& mesh) { return amls::test::enclosed_volume(mesh.vertices, mesh.cells); }
 
 // The area a closed polyline encloses (the shoelace formula): positive when it
 // runs counter-clockwise, the outside on its right.

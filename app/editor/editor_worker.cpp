@@ -7,7 +7,6 @@
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/overloaded.hpp"
 #include "app/editor/sampling_quality.hpp"
-#include "core/io/mesh_inside.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/mesh_export.hpp"
 #include "core/run/scene.hpp"
@@ -26,17 +25,15 @@ Vec<3> to_3d_vector(const Vec<D>& v) {
 std::string describe_count(std::size_t n, const char* what) { return std::to_string(n) + " " + what; }
 
 // The session's surface as a mesh. While it is the opened closed mesh's
-// (undeformed: its samples or their resamples), a grid vertex where F is
-// undefined lies on the side the input mesh says, as `amls resample --mesh`
-// decides it (core/run/mesh_export.hpp): a closed mesh in, a closed mesh out.
+// (undeformed: its samples or their resamples), the grid vertices lie on the
+// sides the input mesh says, as `amls resample --mesh` decides them
+// (core/run/mesh_export.hpp): a closed mesh in, a closed mesh out.
 template <int D>
 MeshExport export_session_mesh(const std::string& path, EditSession<D>& s) {
   if constexpr (D == 3) {
-    if (const TriangleMesh* closed = s.closed_input(); closed && !s.deformed()) {
-      const UndefinedSide<3> side = [closed](const Vec<3>& corner) { return inside_mesh(*closed, corner); };
+    if (const TriangleMesh* closed = s.closed_input(); closed && !s.deformed())
       return export_surface_mesh(path, s.points(), s.grid(), s.settings().parameters(), s.settings().variant,
-                                 s.pool().threads(), side);
-    }
+                                 s.pool().threads(), closed);
   }
   return export_surface_mesh(path, s.evaluable_surface(), s.settings().variant, s.pool());
 }

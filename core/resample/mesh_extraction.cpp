@@ -89,8 +89,8 @@ Reordered<N> lone_first(int lone) {
 template <int D>
 class MeshBuilder {
  public:
-  MeshBuilder(const AmlsSurface<D>& surface, const Resampler<D>& resampler, const UndefinedSide<D>& undefined_side)
-      : surface_(surface), resampler_(resampler), simplices_(kuhn_simplices<D>()), undefined_side_(undefined_side) {}
+  MeshBuilder(const AmlsSurface<D>& surface, const Resampler<D>& resampler, const KnownSide<D>& known_side)
+      : surface_(surface), resampler_(resampler), simplices_(kuhn_simplices<D>()), known_side_(known_side) {}
 
   ExtractedMesh<D> build(Variant variant, ThreadPool& pool) {
     const Grid<D>& grid = surface_.grid();
@@ -139,14 +139,17 @@ class MeshBuilder {
 
   // A cube with a corner where F is undefined is meshed only where the
   // caller says which side such a corner lies on.
-  bool meshable(const Corners& corners) const { return corners.defined || static_cast<bool>(undefined_side_); }
+  bool meshable(const Corners& corners) const { return corners.defined || static_cast<bool>(known_side_); }
 
-  // Whether a corner counts as negative: F < 0 there, or, where F is
-  // undefined, the caller's side (asked once per corner).
+  // Whether a corner counts as negative: the caller's side where it knows
+  // it (asked once per vertex), else F < 0 there.
   bool negative_at(const IVec<D>& vertex, const Evaluation<D>& e) {
-    if (e.defined || !undefined_side_) return e.value < 0.0;
-    auto [side, inserted] = undefined_sides_.try_emplace(Grid<D>::key(vertex));
-    if (inserted) *side = undefined_side_(surface_.grid().vertex_position(vertex)) ? 1 : 0;
+    if (!known_side_) return e.value < 0.0;
+    auto [side, inserted] = known_sides_.try_emplace(Grid<D>::key(vertex));
+    if (inserted) {
+      *side = known_side_(surface_.grid().vertex_position(vertex)) ? 1 : 0;
+      if (e.defined && (e.value < 0.0) != (*side != 0)) ++out_.stats.overruled_signs;
+    }
     return *side != 0;
   }
 
@@ -293,7 +296,9 @@ class MeshBuilder {
         const Vec<D> step = h * corner_offset<D>(e.direction).template cast<double>();
         const int axis = std::countr_zero(static_cast<unsigned>(e.direction));
         SegmentRoot<D> root;
-        if (!f0.defined || !f1.defined) {
+        if (known_side_ && overruled(e, f0, f1)) {
+          root = overruled_root(e, f0, f1, step, axis);
+        } else if (!f0.defined || !f1.defined) {
           root = cap_root(f0.defined ? f0 : f1, f0.defined, step, axis);
         } else if (variant == Variant::interpolated) {
           root = interpolate_segment_root(f0, f1, axis);
@@ -310,9 +315,21 @@ class MeshBuilder {
     for (const auto& f : fallbacks) out_.stats.root_fallbacks += f.value;
   }
 
+  // Whether F at a vertex is defined and of the side the caller gives it.
+  bool agrees(const IVec<D>& vertex, const Evaluation<D>& f) const {
+    return f.defined && (f.value < 0.0) == (*known_sides_.find(Grid<D>::key(vertex)) != 0);
+  }
+
+  // Whether the caller's sides overrule F on an edge: unless F is of the
+  // sides at both ends, or at one while undefined at the other (cap_root).
+  bool overruled(const Edge& e, const Evaluation<D>& f0, const Evaluation<D>& f1) const {
+    const bool agree0 = agrees(e.from, f0), agree1 = agrees(e.from + corner_offset<D>(e.direction), f1);
+    return !((agree0 && agree1) || (agree0 && !f1.defined) || (agree1 && !f0.defined));
+  }
+
   // The crossing on an edge from a corner where F is defined (`known`, at the
   // edge's start when `from_start`) to one where it is undefined and of the
-  // other side (UndefinedSide): where F's first-order extrapolation from the
+  // other side (KnownSide): where F's first-order extrapolation from the
   // known end reaches zero, else at the undefined end (kEndMargin keeps it on
   // the edge), with the known end's normal.
   static SegmentRoot<D> cap_root(const Evaluation<D>& known, bool from_start, const Vec<D>& step, int axis) {
@@ -321,6 +338,28 @@ class MeshBuilder {
     SegmentRoot<D> root;
     root.t = from_start ? fraction : 1.0 - fraction;
     root.normal = oriented_unit_normal<D>(known.gradient, known.mean_normal, axis);
+    return root;
+  }
+
+  // The crossing on an edge whose ends' sides, as the caller gives them,
+  // are not both F's: F's sign jumps there, or F's zero set strays from the
+  // input's surface. |F| still measures the distance to the surface, so
+  // with both ends defined the crossing is the zero of the interpolant of
+  // |F| signed by the sides; with an end undefined, the edge's midpoint.
+  SegmentRoot<D> overruled_root(const Edge& e, const Evaluation<D>& f0, const Evaluation<D>& f1, const Vec<D>& step,
+                                int axis) const {
+    const bool start_negative = *known_sides_.find(Grid<D>::key(e.from)) != 0;
+    SegmentRoot<D> root;
+    root.t = 0.5;
+    if (f0.defined && f1.defined) {
+      const double g0 = start_negative ? -std::abs(f0.value) : std::abs(f0.value);
+      const double g1 = start_negative ? std::abs(f1.value) : -std::abs(f1.value);
+      if (g0 != g1) root.t = g0 / (g0 - g1);
+      root.normal = interpolated_normal(f0, f1, root.t, axis);
+    } else {
+      // Outward: from the negative end to the positive one.
+      root.normal = (start_negative ? 1.0 : -1.0) * step.normalized();
+    }
     return root;
   }
 
@@ -333,8 +372,8 @@ class MeshBuilder {
   const AmlsSurface<D>& surface_;
   const Resampler<D>& resampler_;
   const std::vector<KuhnSimplex<D>> simplices_;
-  const UndefinedSide<D>& undefined_side_;
-  FlatHashMap<std::uint8_t> undefined_sides_;  // vertex -> 1 inside, 0 outside, where F is undefined
+  const KnownSide<D>& known_side_;
+  FlatHashMap<std::uint8_t> known_sides_;  // vertex -> 1 inside, 0 outside, where the caller gives it
   FlatHashMap<std::uint8_t> cube_state_;
   std::vector<IVec<D>> queue_;
   FlatHashMap<std::uint32_t> extra_;  // vertex -> index in extra_values_
@@ -348,27 +387,27 @@ class MeshBuilder {
 
 template <int D>
 ExtractedMesh<D> extract_mesh(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool,
-                              const UndefinedSide<D>& undefined_side) {
+                              const KnownSide<D>& known_side) {
   Resampler<D> resampler;
   resampler.update_function(surface, pool);
-  return MeshBuilder<D>(surface, resampler, undefined_side).build(variant, pool);
+  return MeshBuilder<D>(surface, resampler, known_side).build(variant, pool);
 }
 
 template <int D>
 ExtractedMesh<D> extract_mesh(const PointSet<D>& points, const Grid<D>& grid, const AmlsParameters& parameters,
-                              Variant variant, ThreadPool& pool, const UndefinedSide<D>& undefined_side) {
+                              Variant variant, ThreadPool& pool, const KnownSide<D>& known_side) {
   AmlsSurface<D> surface(grid, parameters);
   surface.set_points(points);
   surface.hash_points(pool);
   surface.update_normals(pool);
-  return extract_mesh(surface, variant, pool, undefined_side);
+  return extract_mesh(surface, variant, pool, known_side);
 }
 
-template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&, const UndefinedSide<2>&);
-template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&, const UndefinedSide<3>&);
+template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&, const KnownSide<2>&);
+template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&, const KnownSide<3>&);
 template ExtractedMesh<2> extract_mesh<2>(const PointSet<2>&, const Grid<2>&, const AmlsParameters&, Variant,
-                                          ThreadPool&, const UndefinedSide<2>&);
+                                          ThreadPool&, const KnownSide<2>&);
 template ExtractedMesh<3> extract_mesh<3>(const PointSet<3>&, const Grid<3>&, const AmlsParameters&, Variant,
-                                          ThreadPool&, const UndefinedSide<3>&);
+                                          ThreadPool&, const KnownSide<3>&);
 
 }  // namespace amls

@@ -26,7 +26,7 @@
 // sign: the whole zero set around the points, followed to where F is
 // undefined. A cube with a corner where F is undefined is left out, so the
 // mesh has a boundary there (mesh_topology() counts it), never a patch --
-// unless the caller says which side such a corner lies on (UndefinedSide).
+// unless the caller says which side each grid vertex lies on (KnownSide).
 #include <cstddef>
 #include <functional>
 
@@ -41,20 +41,22 @@ struct MeshExtractionStats {
   std::size_t extra_evaluations = 0;  // corners evaluated beyond those of update_function()
   std::size_t root_fallbacks = 0;     // exact roots that met an undefined F and took the interpolant's zero
   std::size_t collapsed_vertices = 0;  // 3D: vertices merged into a neighbour beside a grid vertex (sliver_collapse.hpp)
+  std::size_t overruled_signs = 0;     // grid vertices where F is defined but of the other side than KnownSide's
 };
 
-// Which side of the surface a cube corner where F is undefined (too little
-// weight within Delta) lies on: true inside (negative), false outside. Given
-// only where the caller knows it: for the samples of a closed input mesh, the
-// mesh's own inside (core/io/mesh_inside.hpp). Where two sides of a thin or
-// sharply folded part come within Delta, the orientation filter makes F jump
-// in sign between them, and such a jump goes on, away from the points, until
-// F is undefined; without a side there, the cube is left out and a closed
-// input's mesh opens (12 boundary edges on CGAL's elephant.off, 510 on
-// femur.off, nearly all within 2 h of a jump: docs/mesh-export.md). With the
-// side, the jump is capped where F ends, about 2 h from the points.
+// Which side of the surface a grid vertex lies on: true inside (negative),
+// false outside. Given only where the caller knows it: for the samples of a
+// closed input mesh, the mesh's own inside (core/io/mesh_inside.hpp). It then
+// decides the sign of every grid vertex the mesh visits, and F only where on
+// an edge the crossing lies. Without it, where two sides of a thin or sharply
+// folded part come within Delta, the orientation filter makes F jump in sign
+// between them; such a jump goes on, away from the points, until F is
+// undefined, so a closed input's mesh opened there (12 boundary edges on
+// CGAL's elephant.off, 510 on femur.off, nearly all within 2 h of a jump),
+// and capped where F ends it left small handles and bubbles
+// (docs/mesh-export.md).
 template <int D>
-using UndefinedSide = std::function<bool(const Vec<D>& corner)>;
+using KnownSide = std::function<bool(const Vec<D>& corner)>;
 
 template <int D>
 struct ExtractedMesh {
@@ -65,18 +67,18 @@ struct ExtractedMesh {
 // `surface` must be ready to evaluate (hashed, normals updated).
 template <int D>
 ExtractedMesh<D> extract_mesh(const AmlsSurface<D>& surface, Variant variant, ThreadPool& pool,
-                              const UndefinedSide<D>& undefined_side = {});
+                              const KnownSide<D>& known_side = {});
 
 // The mesh of the surface S(P) of `points` (oriented normals) on `grid`.
 template <int D>
 ExtractedMesh<D> extract_mesh(const PointSet<D>& points, const Grid<D>& grid, const AmlsParameters& parameters,
-                              Variant variant, ThreadPool& pool, const UndefinedSide<D>& undefined_side = {});
+                              Variant variant, ThreadPool& pool, const KnownSide<D>& known_side = {});
 
-extern template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&, const UndefinedSide<2>&);
-extern template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&, const UndefinedSide<3>&);
+extern template ExtractedMesh<2> extract_mesh<2>(const AmlsSurface<2>&, Variant, ThreadPool&, const KnownSide<2>&);
+extern template ExtractedMesh<3> extract_mesh<3>(const AmlsSurface<3>&, Variant, ThreadPool&, const KnownSide<3>&);
 extern template ExtractedMesh<2> extract_mesh<2>(const PointSet<2>&, const Grid<2>&, const AmlsParameters&, Variant,
-                                                 ThreadPool&, const UndefinedSide<2>&);
+                                                 ThreadPool&, const KnownSide<2>&);
 extern template ExtractedMesh<3> extract_mesh<3>(const PointSet<3>&, const Grid<3>&, const AmlsParameters&, Variant,
-                                                 ThreadPool&, const UndefinedSide<3>&);
+                                                 ThreadPool&, const KnownSide<3>&);
 
 }  // namespace amls

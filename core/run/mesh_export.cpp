@@ -1,5 +1,6 @@
 #include "core/run/mesh_export.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "core/io/mesh_inside.hpp"
@@ -50,28 +51,43 @@ MeshExport export_surface_mesh(const std::string& path, const AmlsSurface<D>& su
 template <int D>
 MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
                                const AmlsParameters& parameters, Variant variant, int threads,
-                               const UndefinedSide<D>& undefined_side) {
+                               const KnownSide<D>& known_side) {
   mesh_format_from_extension(path);
   ThreadPool pool(threads);
-  return write_extracted(path, extract_mesh(points, grid, parameters, variant, pool, undefined_side));
+  return write_extracted(path, extract_mesh(points, grid, parameters, variant, pool, known_side));
+}
+
+template <int D>
+MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
+                               const AmlsParameters& parameters, Variant variant, int threads,
+                               const TriangleMesh* closed_input) {
+  KnownSide<D> side;
+  std::optional<MeshInside> inside;
+  if constexpr (D == 3)
+    if (closed_input) {
+      inside.emplace(*closed_input);
+      side = [&inside](const Vec<3>& vertex) { return inside->inside(vertex); };
+    }
+  return export_surface_mesh(path, points, grid, parameters, variant, threads, side);
 }
 
 template <int D>
 MeshExport export_resampled_mesh(const std::string& path, const ResampledPointSet<D>& resampled,
                                  const PointSetResampling& options, const TriangleMesh* closed_input) {
-  UndefinedSide<D> side;
-  if constexpr (D == 3)
-    if (closed_input) side = [closed_input](const Vec<3>& corner) { return inside_mesh(*closed_input, corner); };
   return export_surface_mesh(path, resampled.points, resampled.grid, AmlsParameters{options.radius_factor},
-                             options.variant, options.threads, side);
+                             options.variant, options.threads, closed_input);
 }
 
 template MeshExport export_surface_mesh<2>(const std::string&, const AmlsSurface<2>&, Variant, ThreadPool&);
 template MeshExport export_surface_mesh<3>(const std::string&, const AmlsSurface<3>&, Variant, ThreadPool&);
 template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
-                                           const AmlsParameters&, Variant, int, const UndefinedSide<2>&);
+                                           const AmlsParameters&, Variant, int, const KnownSide<2>&);
 template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
-                                           const AmlsParameters&, Variant, int, const UndefinedSide<3>&);
+                                           const AmlsParameters&, Variant, int, const KnownSide<3>&);
+template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
+                                           const AmlsParameters&, Variant, int, const TriangleMesh*);
+template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
+                                           const AmlsParameters&, Variant, int, const TriangleMesh*);
 template MeshExport export_resampled_mesh<2>(const std::string&, const ResampledPointSet<2>&,
                                              const PointSetResampling&, const TriangleMesh*);
 template MeshExport export_resampled_mesh<3>(const std::string&, const ResampledPointSet<3>&,

@@ -31,16 +31,22 @@ MeshExport export_surface_mesh(const std::string& path, const AmlsSurface<D>& su
 template <int D>
 MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
                                const AmlsParameters& parameters, Variant variant, int threads,
-                               const UndefinedSide<D>& undefined_side = {});
+                               const KnownSide<D>& known_side = {});
+// The same with the sides taken from `closed_input` (3D: a closed input mesh;
+// none: F's signs alone), as export_resampled_mesh below decides them.
+template <int D>
+MeshExport export_surface_mesh(const std::string& path, const PointSet<D>& points, const Grid<D>& grid,
+                               const AmlsParameters& parameters, Variant variant, int threads,
+                               const TriangleMesh* closed_input);
 
 // The mesh `amls resample --mesh` writes: the surface of the resampled points
 // on the resampling's grid, with its Delta and variant. The editor's Export
 // mesh of those points, opened as a file, is the same mesh byte for byte
 // (tests/test_editor_worker.cpp), so what is found of one holds for the other.
-// With `closed_input` (3D: the input mesh, where it is closed), a grid
-// vertex where F is undefined lies on the side the input mesh says
-// (UndefinedSide, core/io/mesh_inside.hpp), so that a closed mesh in gives a
-// closed mesh out.
+// With `closed_input` (3D: the input mesh, where it is closed), every grid
+// vertex the mesh visits lies on the side the input mesh says (KnownSide,
+// core/io/mesh_inside.hpp), so that a closed mesh in gives a closed mesh out
+// of the input's topology, with F placing the crossings.
 template <int D>
 MeshExport export_resampled_mesh(const std::string& path, const ResampledPointSet<D>& resampled,
                                  const PointSetResampling& options, const TriangleMesh* closed_input = nullptr);
@@ -48,9 +54,13 @@ MeshExport export_resampled_mesh(const std::string& path, const ResampledPointSe
 extern template MeshExport export_surface_mesh<2>(const std::string&, const AmlsSurface<2>&, Variant, ThreadPool&);
 extern template MeshExport export_surface_mesh<3>(const std::string&, const AmlsSurface<3>&, Variant, ThreadPool&);
 extern template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
-                                                  const AmlsParameters&, Variant, int, const UndefinedSide<2>&);
+                                                  const AmlsParameters&, Variant, int, const KnownSide<2>&);
 extern template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
-                                                  const AmlsParameters&, Variant, int, const UndefinedSide<3>&);
+                                                  const AmlsParameters&, Variant, int, const KnownSide<3>&);
+extern template MeshExport export_surface_mesh<2>(const std::string&, const PointSet<2>&, const Grid<2>&,
+                                                  const AmlsParameters&, Variant, int, const TriangleMesh*);
+extern template MeshExport export_surface_mesh<3>(const std::string&, const PointSet<3>&, const Grid<3>&,
+                                                  const AmlsParameters&, Variant, int, const TriangleMesh*);
 extern template MeshExport export_resampled_mesh<2>(const std::string&, const ResampledPointSet<2>&,
                                                     const PointSetResampling&, const TriangleMesh*);
 extern template MeshExport export_resampled_mesh<3>(const std::string&, const ResampledPointSet<3>&,

@@ -61,7 +61,7 @@ SpacingChoice choose_spacing(const std::vector<Vec<D>>& positions, const PointSe
     bounds(positions, lo, hi);
     if ((lo.array() >= 0.0).all() && (hi.array() <= 1.0).all())
       return {1.0 / options.grid, "--grid " + std::to_string(options.grid) + " over the unit box"};
-    const double longest = (hi - lo).maxCoeff();
+    const double longest = longest_side(positions);
     if (!(longest > 0.0))
       throw std::invalid_argument("--grid " + std::to_string(options.grid) +
                                   ": the points all lie at one position, so their bounding box has no side to divide");
@@ -199,6 +199,15 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
   return out;
 }
 
+template <int D>
+double longest_side(const std::vector<Vec<D>>& positions) {
+  Vec<D> lo, hi;
+  bounds(positions, lo, hi);
+  return (hi - lo).maxCoeff();
+}
+
+template double longest_side<2>(const std::vector<Vec<2>>&);
+template double longest_side<3>(const std::vector<Vec<3>>&);
 template SpacingChoice choose_spacing<2>(const std::vector<Vec<2>>&, const PointSetResampling&);
 template SpacingChoice choose_spacing<3>(const std::vector<Vec<3>>&, const PointSetResampling&);
 template double sampled_extent<2>(const std::vector<Vec<2>>&);

@@ -50,6 +50,11 @@ struct SpacingChoice {
 template <int D>
 SpacingChoice choose_spacing(const std::vector<Vec<D>>& positions, const PointSetResampling& options);
 
+// The longest side of the points' bounding box (at least one point; throws
+// std::invalid_argument for a non-finite coordinate).
+template <int D>
+double longest_side(const std::vector<Vec<D>>& positions);
+
 // The surface's area (3D) or length (2D) as the points sample it: their count
 // times the area (length) each one covers, from the median distance to the
 // kSpacingNeighbours-th neighbour (robust to outliers and duplicates).
@@ -108,6 +113,8 @@ Grid<D> resampling_grid(const PointSet<D>& points, double h, double radius_facto
 template <int D>
 ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResampling& options);
 
+extern template double longest_side<2>(const std::vector<Vec<2>>&);
+extern template double longest_side<3>(const std::vector<Vec<3>>&);
 extern template SpacingChoice choose_spacing<2>(const std::vector<Vec<2>>&, const PointSetResampling&);
 extern template SpacingChoice choose_spacing<3>(const std::vector<Vec<3>>&, const PointSetResampling&);
 extern template double sampled_extent<2>(const std::vector<Vec<2>>&);

@@ -1,5 +1,6 @@
 #include "core/run/shape_opening.hpp"
 
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -9,6 +10,15 @@
 namespace amls {
 
 namespace {
+
+// A mesh's h is at most its bounding box's longest side over this many cells.
+// Its vertices' rule measures the vertices, and a coarse polyhedron's few
+// vertices lie a side apart: CGAL's cube.off got h = 1.41 on a side of 2, a
+// grid of one or two cells that rounds the shape away (volumes off by tens
+// of percent, and an inside known from the input mesh that no grid vertex
+// samples). Its faces are sampled at h whatever h is, so a finer h costs only
+// samples: a cube at 32 cells has some 6,000.
+constexpr double kMinMeshCells = 32.0;
 
 // h for the file as read, and the cost of a resampling at it.
 template <int D>
@@ -21,6 +31,16 @@ SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& g
     choice = choose_spacing(positions, options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
+  }
+  const bool by_rule = given.spacing <= 0.0 && given.grid <= 0;
+  if (input.is_mesh && by_rule) {
+    const double longest = longest_side(positions);
+    if (choice.h > longest / kMinMeshCells) {
+      std::ostringstream reason;
+      reason << "the mesh's longest side (" << longest << ") / " << kMinMeshCells << ", finer than h = " << choice.h
+             << " from " << choice.reason;
+      choice = {longest / kMinMeshCells, reason.str()};
+    }
   }
   if (positions.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
     try {
