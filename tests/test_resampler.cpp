@@ -88,7 +88,7 @@ TEST_CASE("a sign change that is a jump of F, not a zero, is located as a jump")
   }
 }
 
-TEST_CASE("a new point is past a sheet's edge only where the old points all lie to one side and none within h") {
+TEST_CASE("a new point is past a sheet's edge only where the old points all lie to one side, none within h, none sparse") {
   // A sheet in the plane z = 0 ending at x = 0, sampled every h, and its
   // other side (normals down) 0.4 h below: a point a row and a half past
   // the edge, inside and at the edge.
@@ -101,14 +101,21 @@ TEST_CASE("a new point is past a sheet's edge only where the old points all lie 
         sheet.normals.push_back(z == 0.0 ? Vec<3>::UnitZ() : Vec<3>(-Vec<3>::UnitZ()));
       }
   const Vec<3> up = Vec<3>::UnitZ();
-  CHECK(beyond_sheet_edge<3>(sheet, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h));
-  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(-3.0 * h, 0.3 * h, 0.0), up, h));  // surrounded
-  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(0.5 * h, 0.3 * h, 0.0), up, h));   // within h of the edge's points
-  CHECK_FALSE(beyond_sheet_edge<3>(Neighbourhood<3>{}, Vec<3>::Zero(), up, h));      // no old point: nothing to judge
+  CHECK(beyond_sheet_edge<3>(sheet, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h, 3.0 * h));
+  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(-3.0 * h, 0.3 * h, 0.0), up, h, 3.0 * h));  // surrounded
+  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(0.5 * h, 0.3 * h, 0.0), up, h, 3.0 * h));   // within h of the edge's points
+  CHECK_FALSE(beyond_sheet_edge<3>(Neighbourhood<3>{}, Vec<3>::Zero(), up, h, 3.0 * h));  // no old point: nothing to judge
+  // A support widened among them: the points are sparser than h, no edge.
+  Neighbourhood<3> sparse = sheet;
+  const double radius = 3.0 * h;
+  sparse.inverse_r2.assign(sparse.positions.size(), 1.0 / (radius * radius));
+  CHECK(beyond_sheet_edge<3>(sparse, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h, radius));
+  sparse.inverse_r2.front() = 1.0 / (4.0 * radius * radius);
+  CHECK_FALSE(beyond_sheet_edge<3>(sparse, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h, radius));
   // One side alone (a sparse input resampled finely, or an open surface,
   // whose rims have their own rule): no sheet's edge.
   for (Vec<3>& n : sheet.normals) n = Vec<3>::UnitZ();
-  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h));
+  CHECK_FALSE(beyond_sheet_edge<3>(sheet, Vec<3>(1.5 * h, 0.3 * h, 0.0), up, h, 3.0 * h));
 }
 
 TEST_CASE("locating only the crossings that may win HAVECLOSEPOINT keeps what locating every crossing keeps") {

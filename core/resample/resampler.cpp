@@ -282,7 +282,8 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
         // neighbourhood's normals disagree) can the sheet end unseen by the
         // rim test: elsewhere the test costs nothing.
         past_edge = !root.jump && surface.parameters().orientation_filter && !candidates.consistent &&
-                    beyond_sheet_edge<D>(candidates, Vec<D>(start + root.t * direction), root.normal, h);
+                    beyond_sheet_edge<D>(candidates, Vec<D>(start + root.t * direction), root.normal, h,
+                                                      surface.radius());
         block_past_edges += past_edge ? 1 : 0;
       } else {
         root = interpolate_segment_root(f0, f1, x.axis);

@@ -30,9 +30,19 @@ inline constexpr double kSheetOtherSide = 0.5;
 
 // Whether y, with unit normal `normal`, lies past the edge of a sheet whose
 // points are in `neighbourhood` (which must hold every point within
-// kSheetEdgeReach h of y).
+// kSheetEdgeReach h of y) and whose support is `radius` (Delta). Where a
+// point's support was widened (AmlsParameters::widen_support), the points
+// are sparser than h there, and a new point lies far from them for want of
+// points, not past an edge: a sparse scan's first resample left such new
+// points out all over (263 of CGAL's oni.ply, 5 % of its output), and the
+// next resample, of a denser set, filled them in.
 template <int D>
-bool beyond_sheet_edge(const Neighbourhood<D>& neighbourhood, const Vec<D>& y, const Vec<D>& normal, double h) {
+bool beyond_sheet_edge(const Neighbourhood<D>& neighbourhood, const Vec<D>& y, const Vec<D>& normal, double h,
+                       double radius) {
+  const double narrowest = 1.0 / (radius * radius);
+  if (std::any_of(neighbourhood.inverse_r2.begin(), neighbourhood.inverse_r2.end(),
+                  [&](double inverse_r2) { return inverse_r2 < narrowest; }))
+    return false;
   const bool two_sided = std::any_of(neighbourhood.normals.begin(), neighbourhood.normals.end(),
                                      [&](const Vec<D>& n) { return n.dot(normal) < kSheetOtherSide; });
   if (!two_sided) return false;
