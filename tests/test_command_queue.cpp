@@ -80,6 +80,32 @@ TEST_CASE("a popped command carries the epoch it was popped in, so later cancels
   CHECK(queue.pop()->epoch == queue.cancel_epoch());
 }
 
+TEST_CASE("a running load is stopped by another load or Esc, not by a setting, undo or reset queued behind it") {
+  CommandQueue queue;
+  queue.push(command::LoadFile{"scan.xyz"});
+  const QueuedCommand loading = *queue.pop();
+  queue.push(command::SetVariant{Variant::interpolated});
+  queue.push(command::SetGrid{0.01, 3.0});
+  queue.push(command::Undo{});
+  queue.push(command::Reset{});
+  CHECK(loading.epoch == queue.cancel_epoch());
+  queue.push(command::CancelDrag{});
+  CHECK(loading.epoch != queue.cancel_epoch());
+
+  queue.push(command::LoadFile{"other.xyz"});
+  while (!std::holds_alternative<command::LoadFile>(queue.pop()->command)) {
+  }
+  const std::uint64_t second = queue.cancel_epoch();
+  queue.push(command::LoadShape{});
+  CHECK(queue.cancel_epoch() == second + 1);
+  // Once something other than a load runs, a setting stops it again.
+  queue.pop();
+  queue.push(move_to(1.0));
+  queue.pop();
+  queue.push(command::SetVariant{Variant::exact});
+  CHECK(queue.cancel_epoch() == second + 2);
+}
+
 TEST_CASE("a load, Esc or undo drops the moves still queued - a parameter change keeps them") {
   CommandQueue queue;
   queue.push(move_to(1.0));

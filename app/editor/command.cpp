@@ -13,8 +13,14 @@ bool holds_one_of(const Command& command) {
 
 }  // namespace
 
-bool cancels_running_work(const Command& c) {
+bool is_load(const Command& c) {
   using namespace command;
+  return holds_one_of<LoadFile, LoadShape>(c);
+}
+
+bool cancels_running_work(const Command& c, bool running_is_load) {
+  using namespace command;
+  if (running_is_load) return holds_one_of<LoadFile, LoadShape, CancelDrag>(c);
   return holds_one_of<LoadFile, LoadShape, SetVariant, SetGrid, SetDeformation, SetResampling, CancelDrag, Undo, Redo,
                       Reset>(c);
 }

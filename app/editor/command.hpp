@@ -96,9 +96,13 @@ using Command =
                  command::SetDeformation, command::SetResampling, command::SetCurveTracing, command::Undo,
                  command::Redo, command::Reset, command::Export, command::ExportMesh, command::SaveScene>;
 
+bool is_load(const Command& command);
 // A load or a parameter change stops the step that is running (between its
-// phases or inside one), and so do Esc, undo, redo and reset.
-bool cancels_running_work(const Command& command);
+// phases or inside one), and so do Esc, undo, redo and reset. A load that is
+// running is stopped only by another load or Esc: a setting changed while a
+// scan opens applies to the opened surface (it came after the load), and
+// cancelling the load would throw the file away instead.
+bool cancels_running_work(const Command& command, bool running_is_load);
 // Loads, Esc, undo, redo and reset make the handle moves still queued before
 // them pointless: those are dropped.
 bool supersedes_queued_moves(const Command& command);

@@ -10,7 +10,7 @@ std::uint64_t CommandQueue::push(Command command) {
     std::lock_guard lock(mutex_);
     if (closed_) return 0;
     sequence = next_sequence_++;
-    if (cancels_running_work(command)) ++epoch_;
+    if (cancels_running_work(command, running_is_load_)) ++epoch_;
     if (supersedes_queued_moves(command))
       std::erase_if(queue_,
                     [](const QueuedCommand& q) { return std::holds_alternative<command::MoveHandles>(q.command); });
@@ -34,6 +34,7 @@ std::optional<QueuedCommand> CommandQueue::pop() {
   QueuedCommand next = std::move(queue_.front());
   queue_.pop_front();
   next.epoch = epoch_;
+  running_is_load_ = is_load(next.command);
   return next;
 }
 

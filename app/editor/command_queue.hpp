@@ -8,7 +8,8 @@
 // - Cancellation: a command for which cancels_running_work() holds bumps the
 //   cancel epoch; the worker notes the epoch when it pops a command and stops
 //   that command's work, between its phases or inside one, once the epoch has
-//   moved on.
+//   moved on. Whether a command cancels depends on what was popped last (a
+//   load is stopped only by another load or Esc).
 // - A command for which supersedes_queued_moves() holds drops the moves still queued.
 #include <condition_variable>
 #include <cstdint>
@@ -46,6 +47,7 @@ class CommandQueue {
   std::uint64_t next_sequence_ = 1;
   std::uint64_t epoch_ = 0;
   bool closed_ = false;
+  bool running_is_load_ = false;  // what pop() handed out last
 };
 
 }  // namespace amls::editor
