@@ -27,6 +27,7 @@ is dragged down in 30 steps stays open, its export on the exact shape.
 The editor's debug log (--debug-log) says when it is ready and where the view
 is. Exits 77 (skipped) without a display or xdotool.
 """
+import json
 import math
 import os
 import random
@@ -522,8 +523,8 @@ def test_regions(binary, folder, amls):
           "the points inside the dragged region moved with it (%d, %.5f h off)" % (len(inside), off_moved / h))
     check(len(pinned) > 3 and off_pinned < 0.05 * h,
           "the points of the pinned region stayed (%d, %.5f h off)" % (len(pinned), off_pinned / h))
-    # Closed between them: every exported point within 0.3 h of the sphere or of the moved sphere's cap
-    # region, and no gap wider than 2 h anywhere (each point's nearest neighbour within 2 h).
+    # No gap wider than 2 h among a sample of the points (each one's nearest neighbour within 2 h); that
+    # the surface has no hole is checked against its exact shape after the replay below.
     spread = max(min(math.dist(p, q) for q in points if q is not p) for p in points[::25])
     check(spread < 2 * h, "the surface stays closed (farthest nearest neighbour %.2f h)" % (spread / h))
 
@@ -560,6 +561,14 @@ def test_regions(binary, folder, amls):
         worst = max((math.dist(a, b) for a, b in zip(points, replayed)), default=math.inf)
         check(len(replayed) == len(points) and worst < 1e-9,
               "amls deform of the saved scene gives the export (%d points, %.2g apart)" % (len(replayed), worst))
+        # Closed between the regions: the replay's exact shape (the rest sphere carried by the same maps) has
+        # every probe near one of the exported points, and F of those points is defined at every probe.
+        with open(os.path.join(replay, "report.json")) as f:
+            report = json.load(f)
+        near = report["exact_to_points_h"]["max"]
+        check(report["final_probe_holes"] == 0 and near < 1.5,
+              "no hole between the regions: every probe of the exact shape within %.2f h of an exported point, "
+              "F defined at all %d" % (near, report["probes"]))
 
 
 def test_frames_during_heavy_step(binary, folder):
