@@ -54,8 +54,10 @@ TEST_CASE("region gaps: given or searched, the local map is the same bit for bit
     CHECK(searched.linear == given.linear);
   }
   // Near the caps too: points within reach take the motion from the gaps given.
-  for (const Vec<3>& m : test::sphere_cap(kH, 1.0, 0.6)->members()) {
-    const Vec<3> v = moved(0.1, 0.2).linear() * m + moved(0.1, 0.2).offset(test::sphere_cap(kH, 1.0, 0.6)->centre());
+  // Held here: a range-for over a temporary's members would read them after the region is freed.
+  const auto cap = test::sphere_cap(kH, 1.0, 0.6);
+  for (const Vec<3>& m : cap->members()) {
+    const Vec<3> v = moved(0.1, 0.2).linear() * m + moved(0.1, 0.2).offset(cap->centre());
     std::vector<double> gaps(2);
     map.region_gaps(v, gaps);
     CHECK(map.local_map(v).position == map.local_map(v, gaps).position);
