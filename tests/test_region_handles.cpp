@@ -97,6 +97,10 @@ TEST_CASE("region handle: the map moves points within reach exactly and meets th
     const Vec<3> x = above_pole(gap);
     return (map.map(x) - (linear * x + offset)).norm();
   };
+  CHECK(off_motion(0.2 * kH) < 0.01 * kH);
+  // No crease at the reach: the map leaves the motion to second order in the gap (a tenth of the gap, about
+  // a hundredth of the departure; a crease, a first-order departure, would give a tenth).
+  CHECK(off_motion(0.2 * kH) > 30.0 * off_motion(0.02 * kH));
   CHECK(off_motion(2.0) > 0.01);
 }
 
