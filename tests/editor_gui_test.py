@@ -526,7 +526,7 @@ def test_regions(binary, folder, amls):
     # No gap wider than 2 h among a sample of the points (each one's nearest neighbour within 2 h); that
     # the surface has no hole is checked against its exact shape after the replay below.
     spread = max(min(math.dist(p, q) for q in points if q is not p) for p in points[::25])
-    check(spread < 2 * h, "the surface stays closed (farthest nearest neighbour %.2f h)" % (spread / h))
+    check(spread < 2 * h, "no gap wider than 2 h among the sampled points (farthest nearest neighbour %.2f h)" % (spread / h))
 
     # Save Scene, then `amls deform` of the saved scene: its last frame is the export.
     editor.key("ctrl+shift+s")

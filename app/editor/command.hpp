@@ -96,6 +96,7 @@ using Command =
                  command::SetDeformation, command::SetResampling, command::SetCurveTracing, command::Undo,
                  command::Redo, command::Reset, command::Export, command::ExportMesh, command::SaveScene>;
 
+// LoadFile or LoadShape: the commands that replace the session.
 bool is_load(const Command& command);
 // A load or a parameter change stops the step that is running (between its
 // phases or inside one), and so do Esc, undo, redo and reset. A load that is
