@@ -13,7 +13,9 @@
 // Then the north cap (z > 0.8) lifted by 0.5 and turned by 90 degrees about
 // the x axis in 10 steps, as a region: how far the points within its reach
 // are from the sphere so moved, all of them and those more than 3 h inside
-// its rim (the MLS support of a point nearer the rim reaches the bent neck).
+// its rim (the MLS support of a point nearer the rim reaches the bent neck),
+// and the sampling's largest gap and closest pair (the seam between the
+// region's points, which the resample keeps, and the resampled neck).
 //
 //   amls_region_bench [h] [threads] [always|local|both] [quick]
 //
@@ -27,7 +29,9 @@
 #include <string>
 
 #include "core/geometry/shapes.hpp"
+#include "core/resample/resample_policy.hpp"
 #include "core/run/scene_run.hpp"
+#include "core/surface/metrics.hpp"
 
 using namespace amls;
 
@@ -41,8 +45,8 @@ std::shared_ptr<const PointRegion<3>> cap(double h, double sign, double from_pol
   return std::make_shared<const PointRegion<3>>(std::move(members), h);
 }
 
-// The north cap (z > 0.8) lifted and turned by 90 degrees about x in 10 steps, under `always`.
-void turned_cap(double h, int threads) {
+// The north cap (z > 0.8) lifted and turned by 90 degrees about x in 10 steps.
+void turned_cap(double h, int threads, ResamplePolicy::Kind policy) {
   const auto north = cap(h, 1.0, 0.8), south = cap(h, -1.0, 0.6);
   RegionMotion<3> turned;
   turned.translation = Vec<3>(0.0, 0.0, 0.5);
@@ -55,6 +59,7 @@ void turned_cap(double h, int threads) {
   SceneRunOptions options;
   options.tracers_per_point = 1;
   options.threads = threads;
+  options.policy.kind = policy;
   PointSet<3> last;
   run_scene<3>(scene, options, [&](std::size_t, const PointSet<3>& p) { last = p; });
   const RegionHandle<3> placed{north, turned, false};
@@ -70,7 +75,14 @@ void turned_cap(double h, int threads) {
     all = std::max(all, off);
     if (rest.normalized().z() > inner) interior = std::max(interior, off);
   }
-  std::printf("turned by 90 degrees: within reach %.4f h, more than 3 h inside the rim %.4f h\n", all, interior);
+  // The seam between the region's points and the resampled neck: no hole, no cluster.
+  ThreadPool pool(threads);
+  const double gap = sampling_quality(last, h, ResamplePolicy{}.search_radius(), pool).gap;
+  const std::vector<double> spacing = nearest_neighbour_spacing_per_point(last, h, pool);
+  std::printf("turned by 90 degrees (%s): within reach %.4f h, more than 3 h inside the rim %.4f h; "
+              "sampling gap %.2f h, closest neighbours %.3f h\n",
+              policy == ResamplePolicy::Kind::always ? "always" : "local", all, interior, gap,
+              *std::min_element(spacing.begin(), spacing.end()));
 }
 
 // K of the members, each the farthest from those taken before (the first: the one nearest the centre).
@@ -165,6 +177,9 @@ int main(int argc, char** argv) {
     points.history.add_target({Vec<3>(0, 0, -1), Vec<3>(0, 0, 1) + lift}, kSteps);
     report("points", points);
   }
-  if (!quick) turned_cap(h, threads);
+  if (!quick)
+    for (const ResamplePolicy::Kind policy : {ResamplePolicy::Kind::always, ResamplePolicy::Kind::local})
+      if (only == "both" || only == (policy == ResamplePolicy::Kind::always ? "always" : "local"))
+        turned_cap(h, threads, policy);
   return 0;
 }

@@ -329,9 +329,10 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const std::vecto
   auto settle_phases = [&](std::size_t step) { return (policy_measures(policy, step) ? 1 : 0) + 1; };
   Phases phases(control, (settle_first ? settle_phases(k) : 0) + 1 + (resample ? settle_phases(k + 1) : 0));
   // Settles the points before step `step`; false if the edit must stop.
-  auto settle_points = [&](std::size_t step, bool& resampled) {
-    const std::optional<Settling> settled =
-        settle(*surface_, policy, step, [&](const char* phase) { return phases.next(phase); });
+  // The regions where the points are (before the step, or after it, as a replay has them).
+  auto settle_points = [&](std::size_t step, const std::vector<RegionHandle<D>>& regions, bool& resampled) {
+    const std::optional<Settling> settled = settle(
+        *surface_, policy, step, [&](const char* phase) { return phases.next(phase); }, held_regions(regions));
     if (!settled) return false;
     resampled = settled->resampled;
     if (resampled) {
@@ -344,10 +345,13 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const std::vecto
   bool resampled_after = false;
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
-    if (settle_first && !settle_points(k, resampled_first)) return false;
+    // Before step k a replay holds the regions where step k - 1 left them, and none before step 0.
+    const std::vector<RegionHandle<D>> left =
+        k == 0 ? std::vector<RegionHandle<D>>{} : recording_.steps()[k - 1].regions_to;
+    if (settle_first && !settle_points(k, left, resampled_first)) return false;
     if (!phases.next("deforming")) return false;
     add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
-    return !resample || settle_points(k + 1, resampled_after);
+    return !resample || settle_points(k + 1, regions_to, resampled_after);
   });
   if (!finished) {
     if (phases.started()) roll_back(std::move(before));

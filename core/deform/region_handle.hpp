@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/geometry/held_regions.hpp"
 #include "core/geometry/point_region.hpp"
 #include "core/geometry/region_motion.hpp"
 
@@ -46,6 +47,15 @@ bool same_places(const std::vector<RegionHandle<D>>& a, const std::vector<Region
   for (std::size_t i = 0; i < a.size(); ++i)
     if (!a[i].same_place(b[i])) return false;
   return true;
+}
+
+// The regions at their places as a resample keeps their points (those that
+// scale hold none: core/geometry/held_regions.hpp).
+template <int D>
+HeldRegions<D> held_regions(const std::vector<RegionHandle<D>>& regions) {
+  HeldRegions<D> held;
+  for (const RegionHandle<D>& r : regions) held.add(r.region, r.motion);
+  return held;
 }
 
 }  // namespace amls

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/geometry/point_index.hpp"
+#include "core/resample/point_splice.hpp"
 #include "core/resample/region_rings.hpp"
 #include "core/surface/local_support.hpp"
 #include "core/util/flat_hash_map.hpp"
@@ -29,96 +30,6 @@ constexpr double kCellInH = 4.0;
 constexpr double kSupportHops = 4.5;
 // A point's ring (core/resample/region_rings.hpp); beyond the rings measured, kOutside.
 constexpr std::uint8_t kOutside = RegionRings<2>::kOutside;
-
-// How close, in h, the resampler puts two of its points at neighbouring
-// vertices: across a cell's diagonal, h / sqrt(2) (the least spacing of whole
-// resamples: 0.71 h on the vortex and the drag). Along a smooth curve its
-// points are all about h apart, and the crowding distance of the seam (the
-// closest two of R's new points) would be about h: a new point dropped for a
-// kept one that near leaves a gap of two spacings. So it is at most this.
-constexpr double kClosestCrossings = 0.70710678118654752;
-
-// The smallest distance between two of `positions`, if one is below `most`;
-// else `most`.
-template <int D>
-double closest_pair(const std::vector<Vec<D>>& positions, const Vec<D>& origin, double most) {
-  PointIndex<D> index;
-  index.build(positions, origin, most);
-  double closest2 = most * most;
-  for (std::uint32_t i = 0; i < positions.size(); ++i)
-    index.for_each_within(positions[i], most, [&](std::uint32_t j, const Vec<D>& q) {
-      if (j != i) closest2 = std::min(closest2, (q - positions[i]).squaredNorm());
-    });
-  return std::sqrt(closest2);
-}
-
-// Replaces the old points of R (ring <= region) by the new ones there and,
-// with `fill`, adds the new ones of the strip around R (ring <= walked) where
-// they fill the seam. A new point is dropped where a kept point claims its
-// vertex (its nearest: HAVECLOSEPOINT between old and new) or lies closer
-// than the resampler lets its own points come (`crowding`). Without the strip,
-// the kept points near R, stretched up to the limit (grow_above of it where R grew), can lie more than
-// a spacing away from R's new points.
-template <int D>
-void splice(PointSet<D>& points, std::vector<float>& strain, const std::vector<std::uint8_t>& ring,
-            const PointSet<D>& fresh, const std::vector<std::uint8_t>& fresh_ring, std::uint8_t region,
-            std::uint8_t walked, bool fill, const Grid<D>& grid, LocalResampleStats& stats) {
-  const double h = grid.spacing();
-  auto nearest_vertex = [&](const Vec<D>& p) {
-    IVec<D> v;
-    for (int a = 0; a < D; ++a) v[a] = static_cast<std::int64_t>(std::floor((p[a] - grid.origin()[a]) / h + 0.5));
-    return v;
-  };
-  FlatHashMap<std::uint8_t> claimed;
-  std::vector<Vec<D>> seam_points;
-  PointSet<D> out;
-  std::vector<float> out_strain;
-  out.reserve(points.size());
-  out_strain.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (ring[i] <= region) {
-      ++stats.replaced;
-      continue;
-    }
-    // A kept point one ring beyond the strip can still be within h of a new point.
-    if (ring[i] <= walked + 1) {
-      claimed.try_emplace(Grid<D>::key(nearest_vertex(points.positions[i])));
-      seam_points.push_back(points.positions[i]);
-    }
-    out.add(points.positions[i], points.normals[i]);
-    out_strain.push_back(strain[i]);
-  }
-  double crowding = 0.0;  // no kept point near: nothing to crowd
-  if (!seam_points.empty()) {
-    std::vector<Vec<D>> in_region;
-    for (std::size_t k = 0; k < fresh.size(); ++k)
-      if (fresh_ring[k] <= region) in_region.push_back(fresh.positions[k]);
-    crowding = closest_pair<D>(in_region, grid.origin(), kClosestCrossings * h);
-  }
-  PointIndex<D> seam_index;
-  seam_index.build(seam_points, grid.origin(), h);
-  auto crowds = [&](const Vec<D>& q) {
-    bool near = false;
-    seam_index.for_each_within(q, crowding, [&](std::uint32_t, const Vec<D>& p) {
-      near = near || (p - q).squaredNorm() < crowding * crowding;
-    });
-    return near;
-  };
-  const std::uint8_t farthest = fill ? walked : region;  // the farthest ring whose new points are kept
-  for (std::size_t k = 0; k < fresh.size(); ++k) {
-    if (fresh_ring[k] > farthest) continue;
-    const Vec<D>& q = fresh.positions[k];
-    if (claimed.find(Grid<D>::key(nearest_vertex(q))) || crowds(q)) {
-      ++stats.dropped_at_seam;
-      continue;
-    }
-    out.add(q, fresh.normals[k]);
-    out_strain.push_back(0.0F);
-    ++(fresh_ring[k] <= region ? stats.inserted : stats.filled_at_seam);
-  }
-  points = std::move(out);
-  strain = std::move(out_strain);
-}
 
 // The cells of the points over the strain limit, grown cell by cell into the
 // neighbouring cells whose points passed `grow_above` of it (see
@@ -160,7 +71,8 @@ LocalResampler<D>::LocalResampler(const Grid<D>& grid, const AmlsParameters& par
     : grid_(grid), parameters_(parameters), variant_(variant), cell_size_(kCellInH * grid.spacing()) {}
 
 template <int D>
-LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<float>& strain, ThreadPool& pool) {
+LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<float>& strain, ThreadPool& pool,
+                                               const HeldRegions<D>& held) {
   if (strain.size() != points.size())
     throw std::invalid_argument("local resampling: " + std::to_string(points.size()) + " points but " +
                                 std::to_string(strain.size()) + " strains");
@@ -301,8 +213,14 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   stats.resample = resampler_.stats();
   std::vector<std::uint8_t> fresh_ring(fresh.size());
   for (std::size_t k = 0; k < fresh.size(); ++k) fresh_ring[k] = ring_of(fresh.positions[k]);
-  splice<D>(points, strain, ring, fresh, fresh_ring, static_cast<std::uint8_t>(region),
-            static_cast<std::uint8_t>(walked), options_.fill_seam, grid_, stats);
+  const SpliceRings where{ring, fresh_ring, static_cast<std::uint8_t>(region), static_cast<std::uint8_t>(walked),
+                          options_.fill_seam};
+  const SpliceCounts spliced = splice_points<D>(points, &strain, fresh, where, held, grid_, pool);
+  stats.replaced = spliced.replaced;
+  stats.held = spliced.held;
+  stats.inserted = spliced.inserted;
+  stats.filled_at_seam = spliced.filled_at_seam;
+  stats.dropped_at_seam = spliced.dropped_at_seam + spliced.covered;
   stats.resample_seconds = clock.lap();
   return stats;
 }

@@ -31,8 +31,8 @@
 // At the seam a kept point claims its nearest grid vertex: a crossing whose
 // nearer edge end is a claimed vertex counts as HAVECLOSEPOINT there and is
 // dropped, as is one closer to a kept point than the closest two of R's new
-// points are to each other, h / sqrt(2) at most (a kept point off the grid can be that close to a
-// crossing whose nearer end it does not claim). The new points of the strip
+// points are to each other, h / sqrt(2) at most (core/resample/point_splice.hpp).
+// The new points of the strip
 // just outside R (the walked ring) are kept by the same rule
 // (LocalResampleOptions::fill_seam): the kept points next to R are stretched
 // by up to the strain limit (up to grow_above of it where the flagged cells
@@ -40,10 +40,12 @@
 // a whole resample leaves.
 //
 // Inside R, F and the crossings are those of a whole-surface resample of the
-// same points: only which points are replaced differs.
+// same points: only which points are replaced differs. The points that region
+// handles hold (core/geometry/held_regions.hpp) are kept even inside R.
 #include <cstddef>
 #include <vector>
 
+#include "core/geometry/held_regions.hpp"
 #include "core/resample/resampler.hpp"
 
 namespace amls {
@@ -88,10 +90,11 @@ struct LocalResampleStats {
   std::size_t flagged_cells = 0;    // region cells with a point over the strain limit, and those grown into
   std::size_t region_cells = 0;     // of R (flagged cells grown by Delta)
   std::size_t replaced = 0;         // old points in R, removed
+  std::size_t held = 0;             // old points in R kept: a region handle holds them
   std::size_t support = 0;          // points fitted (Update_Normals)
   std::size_t inserted = 0;         // new points in R
   std::size_t filled_at_seam = 0;   // new points of the strip around R, kept where they fill the seam
-  std::size_t dropped_at_seam = 0;  // new points dropped for a kept point's vertex or nearness
+  std::size_t dropped_at_seam = 0;  // new points dropped for a kept point's vertex or nearness, or within a held region
   NormalStats normals;
   ResampleStats resample;  // of the resampler's run over the walked vertices
   double normals_seconds = 0.0;   // choosing the support and fitting it, of which:
@@ -108,8 +111,11 @@ class LocalResampler {
 
   // Resamples S(points) in the region of the points whose strain exceeds the
   // limit; `strain` (one per point) is reset there: new points start at 0.
-  // Kept points come first, in their order, then the new ones.
-  LocalResampleStats resample(PointSet<D>& points, std::vector<float>& strain, ThreadPool& pool);
+  // The points that `held` regions hold stay as they are, wherever they lie
+  // (core/resample/point_splice.hpp). Kept points come first, in their
+  // order, then the new ones.
+  LocalResampleStats resample(PointSet<D>& points, std::vector<float>& strain, ThreadPool& pool,
+                              const HeldRegions<D>& held = {});
 
   double region_cell_size() const { return cell_size_; }
   const LocalResampleOptions& options() const { return options_; }

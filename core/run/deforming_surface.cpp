@@ -1,5 +1,6 @@
 #include "core/run/deforming_surface.hpp"
 
+#include "core/resample/point_splice.hpp"
 #include "core/util/parallel_stopwatch.hpp"
 
 namespace amls {
@@ -40,7 +41,7 @@ void DeformingSurface<D>::set_points(PointSet<D> points) {
 }
 
 template <int D>
-void DeformingSurface<D>::resample_phases(StepStats& stats) {
+void DeformingSurface<D>::resample_phases(StepStats& stats, const HeldRegions<D>& held) {
   ParallelStopwatch clock;
   stats.normals = surface_.update_normals(pool_);
   end_phase(clock, stats.timings.normals, stats.serial.normals);
@@ -48,6 +49,12 @@ void DeformingSurface<D>::resample_phases(StepStats& stats) {
   end_phase(clock, stats.timings.function, stats.serial.function);
   PointSet<D> resampled = resampler_.resample(surface_, variant_, pool_);
   stats.resample = resampler_.stats();
+  if (!held.empty()) {
+    // Every old point goes but the held ones; the new ones join them as at a local resample's seam.
+    PointSet<D> kept = surface_.points();
+    splice_points<D>(kept, nullptr, resampled, SpliceRings{}, held, surface_.grid(), pool_);
+    resampled = std::move(kept);
+  }
   surface_.set_points(std::move(resampled));
   end_phase(clock, stats.timings.resample, stats.serial.resample);
 }
@@ -67,10 +74,10 @@ StepStats DeformingSurface<D>::step(const Deformation<D>& deformation, double t0
 }
 
 template <int D>
-StepStats DeformingSurface<D>::resample_only() {
+StepStats DeformingSurface<D>::resample_only(const HeldRegions<D>& held) {
   StepStats stats;
   stats.points_before = surface_.points().size();
-  resample_phases(stats);
+  resample_phases(stats, held);
   ParallelStopwatch clock;
   surface_.hash_points(pool_);
   end_phase(clock, stats.timings.hash, stats.serial.hash);

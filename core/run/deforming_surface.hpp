@@ -4,6 +4,7 @@
 #include "core/surface/amls_surface.hpp"
 #include "core/deform/deformation.hpp"
 #include "core/util/phase_times.hpp"
+#include "core/geometry/held_regions.hpp"
 #include "core/resample/resampler.hpp"
 
 namespace amls {
@@ -45,8 +46,9 @@ class DeformingSurface {
   // from t0 to t1 and hash them.
   StepStats step(const Deformation<D>& deformation, double t0, double t1, bool resample = true);
 
-  // Resamples the current surface in place, with no deformation.
-  StepStats resample_only();
+  // Resamples the current surface in place, with no deformation. The points
+  // that `held` regions hold stay as they are (core/geometry/held_regions.hpp).
+  StepStats resample_only(const HeldRegions<D>& held = {});
 
   // Recomputes the pseudo-normals of the current points so that surface() can be evaluated.
   NormalStats refresh_normals();
@@ -59,7 +61,7 @@ class DeformingSurface {
   ThreadPool& pool() { return pool_; }
 
  private:
-  void resample_phases(StepStats& stats);
+  void resample_phases(StepStats& stats, const HeldRegions<D>& held = {});
 
   AmlsSurface<D> surface_;
   Resampler<D> resampler_;

@@ -53,10 +53,10 @@ void LocalDeformingSurface<D>::set_points(PointSet<D> points, std::vector<float>
 }
 
 template <int D>
-LocalStepStats LocalDeformingSurface<D>::resample_strained() {
+LocalStepStats LocalDeformingSurface<D>::resample_strained(const HeldRegions<D>& held) {
   LocalStepStats stats;
   stats.points_before = points_.size();
-  stats.resample = resampler_.resample(points_, strain_, pool_);
+  stats.resample = resampler_.resample(points_, strain_, pool_, held);
   stats.timings.normals = stats.resample.normals_seconds;
   stats.timings.function = stats.resample.function_seconds;
   stats.timings.resample = stats.resample.resample_seconds;
@@ -165,7 +165,8 @@ LocalStepStats LocalDeformingSurface<D>::step(const MlsDeformation<D>& deformati
   LocalStepStats stats;
   stats.points_after = points_.size();
   if (resamples) {
-    stats = resample_strained();
+    // The regions' points stay as their motion put them (core/geometry/held_regions.hpp).
+    stats = resample_strained(held_regions(current_regions_));
     rest_.reset();
     rebase(deformation.to(), deformation.to_regions(), deformation.kind(), deformation.alpha());
   }

@@ -118,7 +118,8 @@ class LocalDeformingSurface {
   void restore(Saved saved);
 
  private:
-  LocalStepStats resample_strained();
+  // Resamples where strained, keeping the points that `held` holds.
+  LocalStepStats resample_strained(const HeldRegions<D>& held = {});
   // The map from the rest handles to `to` (and the rest regions to `to_regions`), by the polar iteration.
   MlsDeformation<D> map_from_rest(const std::vector<Vec<D>>& to, const std::vector<RegionHandle<D>>& to_regions) const;
   // Ends the rest state: points_ becomes the exact map of the rest points if it was interpolated.

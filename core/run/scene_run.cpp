@@ -216,7 +216,7 @@ class SceneRunner {
   // if the policy asks, and makes the frame. False if the resample is empty.
   bool settle_frame(std::size_t step, SceneStepRecord& record) {
     if (local_) return local_frame(step, record);
-    const Settling settled = *settle(*surface_, options_.policy, step);
+    const Settling settled = *settle(*surface_, options_.policy, step, {}, held_regions(regions_));
     report_.quality_seconds += settled.quality_seconds;
     record.resampled = settled.resampled;
     if (record.resampled) {
@@ -252,6 +252,7 @@ class SceneRunner {
   void deform(const HistoryStep<D>& step) {
     const MlsDeformation<D> deformation(step.from, step.to, step.regions_from, step.regions_to, scene_.kind,
                                         scene_.alpha);
+    regions_ = step.regions_to;
     if (local_) {
       const LocalStepStats stats = local_->step(deformation);
       report_.per_step.back().timings += stats.timings;
@@ -373,6 +374,9 @@ class SceneRunner {
   std::size_t probe_stride_ = 1;
   std::optional<DeformingSurface<D>> surface_;
   std::optional<LocalDeformingSurface<D>> local_;  // instead of surface_, under `local`
+  // The region handles where the last step left them (none before the first):
+  // a resample keeps the points they hold (core/geometry/held_regions.hpp).
+  std::vector<RegionHandle<D>> regions_;
   // What the last local step did, for the next frame's record.
   bool local_resampled_ = false;
   std::size_t local_failed_fits_ = 0;

@@ -44,15 +44,17 @@ inline constexpr const char* kCheckingPhase = "checking the sampling";
 inline constexpr const char* kResamplingPhase = "resampling";
 
 // The points before step `step`: the policy decides, and S(P) is resampled in
-// place (DeformingSurface::resample_only) if it said so. Empty if `gate`
-// stopped it; the surface is then as before unless the resample had begun.
+// place (DeformingSurface::resample_only), keeping the points that `held`
+// regions hold (the region handles at their places before the step), if it
+// said so. Empty if `gate` stopped it; the surface is then as before unless
+// the resample had begun.
 template <int D>
 std::optional<Settling> settle(DeformingSurface<D>& surface, const ResamplePolicy& policy, std::size_t step,
-                               const SettlePhaseGate& gate = {});
+                               const SettlePhaseGate& gate = {}, const HeldRegions<D>& held = {});
 
 extern template std::optional<Settling> settle<2>(DeformingSurface<2>&, const ResamplePolicy&, std::size_t,
-                                                  const SettlePhaseGate&);
+                                                  const SettlePhaseGate&, const HeldRegions<2>&);
 extern template std::optional<Settling> settle<3>(DeformingSurface<3>&, const ResamplePolicy&, std::size_t,
-                                                  const SettlePhaseGate&);
+                                                  const SettlePhaseGate&, const HeldRegions<3>&);
 
 }  // namespace amls
