@@ -5,7 +5,7 @@
 
 With the amls binary, the region test also replays the editor's saved scene with `amls deform`, and the open
 cap's test moves its dense cap by the saved scene for the exact shape; --only= runs the named checks alone
-(2d, open_without_normals, regions, frames_during_heavy_step, open_cap_drag).
+(2d, open_without_normals, regions, region_edits, frames_during_heavy_step, open_cap_drag).
 
 The test starts its own Xvfb (1280x800x24) on a display number Xvfb picks
 itself (-displayfd: no race with other X servers on the machine, which
@@ -21,7 +21,10 @@ point set; on a 3D sphere opened from a scene with a pinned region, the
 editor shows that region, an Alt+drag lasso makes another, a brush stroke (B)
 a third that undo takes away; the lasso's region dragged by its marker and
 turned with Ctrl+drag moves rigidly in the export while the pinned one stays,
-and `amls deform` of the saved scene gives the export; on a heavy 3D
+and `amls deform` of the saved scene gives the export; the region window's
+controls pressed with the mouse (add and subtract by lasso, invert, clear and
+undo), P to pin, and Ctrl+Shift+drag to scale a region, whose export lies on
+the sphere scaled with it; on a heavy 3D
 scene, frames keep coming while the worker resamples; an open cap (tools/open_cap/) whose bottom pole
 is dragged down in 30 steps stays open, its export on the exact shape.
 The editor's debug log (--debug-log) says when it is ready and where the view
@@ -579,6 +582,121 @@ def test_regions(binary, folder, amls):
               "F defined at all %d" % (near, report["probes"]))
 
 
+def region_window(editor):
+    """The centres of the region window's controls (window units), by label, from the newest line of the log."""
+    line = [l for l in editor.lines() if " region-window " in l][-1]
+    return {name: (round(float(x)), round(float(y))) for name, x, y in re.findall(r"(\w+)=(\S+),(\S+)", line)}
+
+
+def press_control(editor, name):
+    """A click on the region window's control `name`, as a user would press it."""
+    editor.wait_idle()
+    at = region_window(editor)[name]
+    editor.move(*at)
+    time.sleep(0.2)
+    editor.let_go("click", 1)
+    editor.wait_idle()
+
+
+def regions_after(editor, pattern, action):
+    """Does `action`, then waits for a new `regions` line matching `pattern` (not one logged before it)."""
+    before = editor.count(r"regions " + pattern)
+    action()
+    return editor.wait_line(r"regions " + pattern, after=before, what="regions " + pattern)
+
+
+def test_region_edits(binary, folder):
+    # The selection edits and the region's own controls, pressed as a user would: add and subtract by lasso,
+    # invert, pin with P, scale with Ctrl+Shift+drag, clear, undo.
+    scene = write_scene(folder, "sphere_edits.json",
+                        '{"dimension": 3, "name": "sphere", "shape": {"type": "sphere", "radius": 1, "points": 3000},'
+                        ' "grid": {"spacing": 0.08}, "stages": [{"handles": [[0, 0, -1]],'
+                        ' "targets": [{"steps": 1, "handles": [[0, 0, -1]]}]}]}')
+    out = os.path.join(folder, "edits.ply")
+    editor = Editor(binary, folder, "region_edits", [scene, "--export", out])
+    editor.wait_line(r"snapshot .* load=1 dimension=3", what="the sphere to load")
+    editor.wait_idle()
+    h = 0.08
+    lasso(editor, circle_on_sphere(editor, 0.0, 0.0, 0.3))
+    regions_line(editor, r"count=1 active=0 ")
+    first = last_regions(editor)[0]["members"]
+
+    press_control(editor, "add")
+    lasso(editor, circle_on_sphere(editor, 0.3, 0.0, 0.2))
+    editor.wait_idle()
+    added = last_regions(editor)
+    check(len(added) == 1 and added[0]["members"] > first,
+          "add: a second lasso grew the region (%d to %d members)" % (first, added[0]["members"]))
+
+    press_control(editor, "subtract")
+    lasso(editor, circle_on_sphere(editor, 0.0, 0.0, 0.15))
+    editor.wait_idle()
+    subtracted = last_regions(editor)
+    check(len(subtracted) == 1 and subtracted[0]["members"] < added[0]["members"],
+          "subtract: a lasso inside it took members away (%d to %d)" % (added[0]["members"], subtracted[0]["members"]))
+    press_control(editor, "new")
+
+    kept = subtracted[0]["members"]
+    press_control(editor, "invert")
+    inverted = last_regions(editor)[0]["members"]
+    press_control(editor, "invert")
+    back = last_regions(editor)[0]["members"]
+    print("members: lasso %d, added %d, subtracted %d, inverted %d, inverted again %d" %
+          (first, added[0]["members"], kept, inverted, back))
+    check(inverted > 5 * kept and abs(back - kept) <= 0.1 * kept,
+          "invert takes the rest of the surface (%d members), and again about the region before (%d of %d)" %
+          (inverted, back, kept))
+
+    regions_after(editor, r"count=1 .*\| members=\d+ pinned=1 ", lambda: editor.key("p"))
+    regions_after(editor, r"count=1 .*\| members=\d+ pinned=0 ", lambda: editor.key("p"))
+    check(True, "P pins the active region and P again lets it go")
+
+    regions_after(editor, r"count=0 ", lambda: press_control(editor, "clear"))
+    regions_after(editor, r"count=1 ", lambda: editor.key("ctrl+z"))
+    check(True, "clear removes the active region, and undo brings it back")
+
+    # A click on its marker makes it the active region again, and clear takes it away.
+    editor.wait_idle()
+    marker = last_regions(editor)[0]["marker"]
+    editor.move(round(marker[0]), round(marker[1]))
+    time.sleep(0.2)
+    regions_after(editor, r"count=1 active=0 ", lambda: editor.let_go("click", 1))
+    regions_after(editor, r"count=0 ", lambda: press_control(editor, "clear"))
+
+    # A new region in its place; Ctrl+Shift+drag away from its marker scales it about its centre.
+    regions_after(editor, r"count=1 active=0 ", lambda: lasso(editor, circle_on_sphere(editor, 0.0, 0.0, 0.45)))
+    marker = last_regions(editor)[0]["marker"]
+    start = (round(marker[0]) + 9, round(marker[1]))
+    editor.move(*start)
+    time.sleep(0.2)
+    xdotool("keydown", "ctrl+shift")
+    time.sleep(0.1)
+    xdotool("mousedown", 1)
+    for k in range(1, 3):
+        time.sleep(0.04)
+        editor.move(start[0] + k, start[1])
+    time.sleep(0.2)
+    editor.let_go("mouseup", 1)
+    time.sleep(0.1)
+    xdotool("keyup", "ctrl+shift")
+    editor.wait_idle()
+    region = last_regions(editor)[0]
+    scale = float(dict(re.findall(r"(\w+)=(\S+)", [l for l in editor.lines() if "regions count=" in l][-1]
+                                  .split(" | ")[1]))["scale"])
+    check(1.1 < scale < 1.4, "Ctrl+Shift+drag scaled the region (by %.3f)" % scale)
+    points = export(editor, out, 0, 3)
+    # Inside the scaled region, well within its rim (its points resampled: it holds none), the surface is the
+    # sphere scaled about the region's centre.
+    c, t = region["pivot"], region["translation"]
+    def scaled_back(p):
+        return [c[i] + (p[i] - c[i] - t[i]) / scale for i in range(3)]
+    inside = [p for p in points if math.hypot(*scaled_back(p)[:2]) < 0.15 and scaled_back(p)[2] > 0.5]
+    off = max(abs(math.hypot(*scaled_back(p)) - 1.0) * scale for p in inside)
+    check(len(inside) > 3 and off < 0.05 * h,
+          "the scaled region's points lie on the sphere scaled with it (%d, %.4f h off)" % (len(inside), off / h))
+    editor.quit()
+
+
 def test_frames_during_heavy_step(binary, folder):
     scene = os.path.join(folder, "sphere.json")
     with open(scene, "w") as f:
@@ -779,6 +897,7 @@ def main():
         tests = {"2d": lambda: test_2d(binary, folder),
                  "open_without_normals": lambda: test_open_without_normals(binary, folder),
                  "regions": lambda: test_regions(binary, folder, amls),
+                 "region_edits": lambda: test_region_edits(binary, folder),
                  "frames_during_heavy_step": lambda: test_frames_during_heavy_step(binary, folder),
                  "open_cap_drag": lambda: test_open_cap_drag(binary, folder, amls)}
         for name in only or tests:

@@ -94,6 +94,54 @@ TEST_CASE("the worker applies commands in order and each snapshot says which com
   CHECK(worker.take_messages().empty());
 }
 
+TEST_CASE("a region drag fills Table 1 as a point handle's drag does, resampled every step or locally") {
+  // The sphere's north cap moved and its south cap pinned, under `always` and then `local`: each drag's
+  // steps count, the last step's phases and the totals since the load are those of the loop that ran.
+  const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, 4000);
+  std::vector<Vec<3>> north, south;
+  for (const Vec<3>& p : sphere.positions) {
+    if (p.z() > 0.7) north.push_back(p);
+    if (p.z() < -0.7) south.push_back(p);
+  }
+  EditorWorker worker;
+  worker.post(command::LoadShape{3, 1.0, 4000, 0.06});
+  worker.post(command::AddRegion{north, false});
+  worker.post(command::AddRegion{south, true});
+  auto region_drag = [&](double from, double to) {
+    worker.post(command::BeginDrag{});
+    for (int k = 1; k <= 4; ++k) {
+      command::RegionMove lifted;
+      lifted.translation = Vec<3>(0.0, 0.0, from + (to - from) * k / 4.0);
+      worker.post(command::MoveHandles{{}, {lifted, command::RegionMove{}}});
+      REQUIRE(worker.wait_until_idle(kPatience));  // one step per move
+    }
+  };
+  region_drag(0.0, 0.2);
+  auto snapshot = worker.snapshot();
+  CHECK(snapshot->steps == 4);
+  CHECK(snapshot->recorded_steps == 4);
+  REQUIRE(snapshot->has_last);
+  CHECK(snapshot->last.timings.deform > 0.0);
+  CHECK(snapshot->last.timings.normals > 0.0);
+  CHECK(snapshot->last.timings.function > 0.0);
+  CHECK(snapshot->last.timings.resample > 0.0);
+  CHECK(snapshot->total.total() >= snapshot->last.timings.total());
+  const std::size_t resampled = snapshot->resamples;
+  CHECK(resampled >= 4);  // every step's points resampled
+  const double total = snapshot->total.total();
+
+  worker.post(command::SetResampling{true, ResamplePolicy::parse("local")});
+  region_drag(0.2, 0.6);
+  REQUIRE(worker.wait_until_idle(kPatience));
+  snapshot = worker.snapshot();
+  CHECK(snapshot->steps == 8);
+  REQUIRE(snapshot->has_last);
+  CHECK(snapshot->last.timings.deform > 0.0);
+  CHECK(snapshot->total.total() > total);
+  CHECK(snapshot->resamples > resampled);  // the neck stretched past the strain limit
+  for (const Message& m : worker.take_messages()) CHECK_MESSAGE(m.level != Message::Level::error, m.text);
+}
+
 TEST_CASE("a drag's moves coalesce: fewer steps than moves, ending at the newest position") {
   EditorWorker worker;
   worker.post(command::LoadShape{3, 1.0, 4000, 0.06});

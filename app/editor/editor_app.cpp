@@ -14,7 +14,6 @@
 #include <thread>
 
 #include "core/io/point_set_io.hpp"
-#include "app/editor/region_panel.hpp"
 #include "render/image.hpp"
 
 namespace amls::editor {
@@ -120,7 +119,7 @@ void EditorApp::frame() {
   draw_help(ui_);
   if (snapshot.dimension > 0) {
     regions_.set_spacing(snapshot.settings.spacing);
-    draw_region_window(regions_, snapshot.settings.spacing);
+    log_region_window(draw_region_window(regions_, snapshot.settings.spacing));
     draw_region_overlay(regions_, view_.camera(), window_.viewport(), window_.pixels_per_unit());
   }
   if (std::optional<std::string> chosen = browser_.draw(ui_.show_browser)) post(command::LoadFile{*chosen});
@@ -426,6 +425,16 @@ void EditorApp::log_regions() {
   if (line.str() == last_regions_) return;
   last_regions_ = line.str();
   log_.line(last_regions_);
+}
+
+void EditorApp::log_region_window(const ControlCentres& centres) {
+  if (!log_.enabled()) return;
+  std::ostringstream line;
+  line << "region-window";
+  for (const auto& [name, centre] : centres) line << " " << name << "=" << centre.x << "," << centre.y;
+  if (line.str() == last_region_window_) return;
+  last_region_window_ = line.str();
+  log_.line(last_region_window_);
 }
 
 void EditorApp::log_view() {

@@ -16,6 +16,7 @@
 #include "app/editor/editor_worker.hpp"
 #include "app/editor/file_browser.hpp"
 #include "app/editor/panels.hpp"
+#include "app/editor/region_panel.hpp"
 #include "app/editor/region_tool.hpp"
 #include "app/editor/ui_state.hpp"
 #include "app/editor/view_controller.hpp"
@@ -45,6 +46,8 @@ class EditorApp {
   void fit_view();
   void log_view();
   void log_regions();
+  // Where the region window's controls are, when that changes.
+  void log_region_window(const ControlCentres& centres);
   double wait_timeout() const;
 
   EditorOptions options_;
@@ -55,6 +58,7 @@ class EditorApp {
   ViewController view_;
   RegionTool regions_;
   std::string last_regions_;
+  std::string last_region_window_;
   FileBrowser browser_;
   std::shared_ptr<const Snapshot> shown_;
   std::uint64_t last_posted_ = 0;

@@ -92,7 +92,13 @@ void draw_region_overlay(const RegionTool& tool, const Camera& camera, const Vie
   }
 }
 
-void draw_region_window(RegionTool& tool, double reach) {
+ControlCentres draw_region_window(RegionTool& tool, double reach) {
+  ControlCentres centres;
+  // The centre of the control just drawn, as `name`.
+  auto note = [&](const char* name) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    centres.emplace_back(name, glm::vec2(0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y)));
+  };
   const ImGuiIO& io = ImGui::GetIO();
   const float margin = ImGui::GetStyle().WindowPadding.x;
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - margin, io.DisplaySize.y - 3.0f * ImGui::GetFontSize()),
@@ -102,8 +108,10 @@ void draw_region_window(RegionTool& tool, double reach) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::Checkbox("Lasso (or Alt+drag)", &tool.lasso_mode);
+  note("lasso");
   ImGui::SameLine();
   ImGui::Checkbox("Brush (B)", &tool.brush_mode);
+  note("brush");
   if (tool.brush_mode) {
     ImGui::SetNextItemWidth(8.0f * ImGui::GetFontSize());
     ImGui::SliderFloat("radius / h ([ ])", &tool.brush_radius_h, kBrushRadiusH.first, kBrushRadiusH.second, "%.1f",
@@ -111,10 +119,13 @@ void draw_region_window(RegionTool& tool, double reach) {
   }
   int edit = static_cast<int>(tool.edit);
   ImGui::RadioButton("new", &edit, 0);
+  note("new");
   ImGui::SameLine();
   ImGui::RadioButton("add", &edit, 1);
+  note("add");
   ImGui::SameLine();
   ImGui::RadioButton("subtract", &edit, 2);
+  note("subtract");
   tool.edit = static_cast<SelectionEdit>(edit);
   const std::size_t count = tool.regions().size();
   ImGui::Text("%zu region%s%s", count, count == 1 ? "" : "s",
@@ -125,12 +136,16 @@ void draw_region_window(RegionTool& tool, double reach) {
     ImGui::Text("region %zu: %zu points", *active + 1, region.members.size());
     bool pinned = region.pinned;
     if (ImGui::Checkbox("pinned (P)", &pinned)) tool.set_pinned(pinned);
+    note("pinned");
     ImGui::SameLine();
     if (ImGui::Button("invert")) tool.invert_active(reach);
+    note("invert");
     ImGui::SameLine();
     if (ImGui::Button("clear")) tool.remove_active();
+    note("clear");
   }
   ImGui::End();
+  return centres;
 }
 
 }  // namespace amls::editor

@@ -6,6 +6,10 @@
 // brush stroke's points in the selection's colour and the brush's sphere; and
 // a small window to choose the lasso or the brush, the edit (new, add,
 // subtract), and to pin, invert or clear the active region.
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "app/editor/region_tool.hpp"
 
 namespace amls::editor {
@@ -13,7 +17,12 @@ namespace amls::editor {
 // `pixels_per_unit` converts ImGui's window units to framebuffer pixels.
 void draw_region_overlay(const RegionTool& tool, const Camera& camera, const Viewport& viewport,
                          glm::vec2 pixels_per_unit);
+// Where each of the region window's controls is on screen (window units): its
+// label and its centre, for the debug log, so that a test can press them as a
+// user would.
+using ControlCentres = std::vector<std::pair<std::string, glm::vec2>>;
+
 // `reach`: the distance within which a point belongs to a region (h), for Invert.
-void draw_region_window(RegionTool& tool, double reach);
+ControlCentres draw_region_window(RegionTool& tool, double reach);
 
 }  // namespace amls::editor
