@@ -24,15 +24,22 @@ constexpr int kCubeCorners = 1 << D;
 // facets lie up to about 1e-2 h inside the sphere).
 constexpr double kEndMargin = 1e-3;
 
-// Mesh vertices are rounded to multiples of h / 2^20 from the grid's origin,
-// moving them by at most 1e-6 h. Where a flat face of the surface is parallel
-// to a grid plane (a CAD model's base), its vertices' roots differ in the last
-// bits, so the face is flat only to about 1e-17; other programs' triangle
-// tests then misjudge nearly coplanar neighbours (Open3D's, with its 1e-6
-// tolerance on the scaled distances, finds hundreds of "crossing" pairs on
-// CGAL's fandisk_large.off). Rounded, the face's vertices share one exact
-// coordinate, and the face is exactly flat.
-constexpr double kVertexLattice = 1.0 / (1 << 20);
+// Mesh vertices are rounded to multiples of h / 2^12 from the grid's origin,
+// moving them by at most 2.2e-4 h (a fifth of the end margin, far below the
+// chord error). Where a flat face of the surface is parallel to a grid plane
+// (a CAD model's base), its vertices' roots differ in the last bits, so the
+// face is flat only to about 1e-17; other programs' triangle tests then
+// misjudge nearly coplanar neighbours (Open3D's, with its 1e-6 tolerance on
+// the scaled distances, found hundreds of "crossing" pairs on CGAL's
+// fandisk_large.off). Rounded, the face's vertices share one exact coordinate,
+// and the face is exactly flat. A flat face at an angle to the grid (a
+// chamfer, a cube's rounded edge) is flat only to rounding, but where it runs
+// through grid vertices, a vertex merged beside one (core/geometry/
+// sliver_collapse.hpp), a few units of h / 2^20 off it, rounds onto it: with
+// h / 2^20 Open3D still took 12 pairs of triangles on CGAL's cube.off, 3 on
+// fandisk_large.off, 7 on couplingdown.off and 5 on spool.off for crossing
+// ones, all apart in exact arithmetic; with h / 2^12, none.
+constexpr double kVertexLattice = 1.0 / (1 << 12);
 
 // A simplex of Kuhn's triangulation of the unit cube: its corners (as cube
 // corners, each one axis beyond the last) and the sign of its orientation,
