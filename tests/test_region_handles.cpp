@@ -8,6 +8,7 @@
 #include "core/deform/mls_deformation.hpp"
 #include "core/geometry/held_regions.hpp"
 #include "core/resample/resample_policy.hpp"
+#include "core/run/deforming_surface.hpp"
 #include "core/run/scene_run.hpp"
 #include "core/surface/metrics.hpp"
 #include "region_fixtures.hpp"
@@ -269,4 +270,38 @@ TEST_CASE("region handle: over 200 steps a moved region keeps the same points, n
   double farthest = 0.0;
   for (const Vec<3>& x : at_end) farthest = std::max(farthest, std::sqrt(start_points.squared_distance(x)));
   CHECK(farthest < 1e-9);
+}
+
+TEST_CASE("region handle: a resample keeps a held region's points, and fills a hole among them") {
+  // The resampled sphere with its points near the north pole taken away (a hole 4 h across), the north
+  // cap held where it is: the held points stay as they were, and the hole gets new points (none of the
+  // region's own points cover it).
+  const Scene<3> scene = test::sphere_with_caps(kH, RegionMotion<3>{}, 1);
+  const RegionHandle<3> north = scene.history.stages[0].regions[1];
+  const Grid<3> grid(Vec<3>::Constant(-2.0), kH);
+  DeformingSurface<3> surface(grid, scene.parameters(), Variant::exact, 2);
+  surface.set_points(sample_sphere(Vec<3>::Zero(), 1.0, sphere_points_for_spacing(1.0, kH)));
+  surface.resample_only();
+  PointSet<3> holed;
+  for (std::size_t i = 0; i < surface.points().size(); ++i) {
+    const Vec<3>& x = surface.points().positions[i];
+    if (x.z() < 0.0 || std::hypot(x.x(), x.y()) > 2.0 * kH) holed.add(x, surface.points().normals[i]);
+  }
+  const PointSet<3> before = holed;
+  surface.set_points(holed);
+  surface.resample_only(held_regions<3>({north}));
+  const PointSet<3>& after = surface.points();
+  // Every old point within the cap's reach is still there, where it was.
+  const PointRegion<3> after_points(after.positions, kH);
+  std::size_t held = 0;
+  for (const Vec<3>& x : before.positions)
+    if (north.region->contains(x)) {
+      ++held;
+      CHECK(after_points.squared_distance(x) == 0.0);
+    }
+  CHECK(held > 500);
+  // And the pole, 2 h from the nearest old point, has a new point beside it.
+  const PointRegion<3> old_points(before.positions, kH);
+  CHECK(std::sqrt(old_points.squared_distance(Vec<3>(0, 0, 1))) > 1.9 * kH);
+  CHECK(std::sqrt(after_points.squared_distance(Vec<3>(0, 0, 1))) < 0.75 * kH);
 }

@@ -8,7 +8,8 @@
 // at a point near the region's rim is fitted to the bent neighbours just
 // outside it too: a cap turned by 90 degrees drifted by a third of h at its
 // rim, step after step. Kept as they are, the region's points follow its
-// motion to rounding, and only the surface outside is resampled.
+// motion to rounding, and only the surface outside is resampled (and any hole
+// among the region's points: core/resample/point_splice.hpp).
 //
 // A region whose motion scales it (scale other than 1) holds nothing: its
 // points' spacing has changed with it, so it is resampled like the rest.

@@ -18,6 +18,14 @@ namespace {
 // kept one that near leaves a gap of two spacings. So it is at most this.
 constexpr double kClosestCrossings = 0.70710678118654752;
 
+// A new point within a held region is dropped where a kept point lies this
+// near (in h): the region's own points cover it. Farther from every kept
+// point it fills a hole (a part of the surface that came into the region
+// without its points), and is kept by the seam's rule. A resample's points lie
+// at most about 0.7 h from their nearest neighbour, so a held region's own
+// points leave no new point that far.
+constexpr double kHeldCover = 1.5;
+
 // The smallest distance between two of `positions`, if one is below `most`;
 // else `most`.
 template <int D>
@@ -97,7 +105,7 @@ SpliceCounts splice_points(PointSet<D>& points, std::vector<float>* strain, cons
     crowding = closest_pair<D>(in_region, grid.origin(), kClosestCrossings * h);
   }
   PointIndex<D> seam_index;
-  seam_index.build(seam_points, grid.origin(), h);
+  seam_index.build(seam_points, grid.origin(), kHeldCover * h);  // as wide as the farthest query
   auto crowds = [&](const Vec<D>& q) {
     bool near = false;
     seam_index.for_each_within(q, crowding, [&](std::uint32_t, const Vec<D>& p) {
@@ -105,13 +113,20 @@ SpliceCounts splice_points(PointSet<D>& points, std::vector<float>* strain, cons
     });
     return near;
   };
+  auto covered = [&](const Vec<D>& q) {
+    bool near = false;
+    seam_index.for_each_within(q, kHeldCover * h, [&](std::uint32_t, const Vec<D>& p) {
+      near = near || (p - q).squaredNorm() <= kHeldCover * kHeldCover * h * h;
+    });
+    return near;
+  };
   for (std::size_t k = 0; k < fresh.size(); ++k) {
     if (fresh_ring(k) > farthest) continue;
-    if (fresh_held[k]) {
+    const Vec<D>& q = fresh.positions[k];
+    if (fresh_held[k] && covered(q)) {
       ++counts.covered;
       continue;
     }
-    const Vec<D>& q = fresh.positions[k];
     if (claimed.find(Grid<D>::key(nearest_vertex(q))) || crowds(q)) {
       ++counts.dropped_at_seam;
       continue;

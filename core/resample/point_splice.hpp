@@ -9,7 +9,8 @@
 // dropped, as is one closer to a kept point than the closest two new points
 // of R are to each other, h / sqrt(2) at most (a kept point off the grid can
 // be that close to a crossing whose nearest vertex it does not claim). A new
-// point within a held region is dropped too: the region's own points are there.
+// point within a held region is dropped too where a kept point lies within
+// 1.5 h: the region's own points are there (farther, it fills a hole).
 #include <cstddef>
 #include <cstdint>
 #include <span>
