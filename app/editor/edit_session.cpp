@@ -346,9 +346,10 @@ EditResult EditSession<D>::move_handles(std::vector<Vec<D>> to, const std::vecto
   PointSet<D> before = surface_->points();
   const bool finished = phases.run(surface_->pool(), [&] {
     // Before step k a replay holds the regions where step k - 1 left them, and none before step 0.
-    const std::vector<RegionHandle<D>> left =
-        k == 0 ? std::vector<RegionHandle<D>>{} : recording_.steps()[k - 1].regions_to;
-    if (settle_first && !settle_points(k, left, resampled_first)) return false;
+    if (settle_first &&
+        !settle_points(k, k == 0 ? std::vector<RegionHandle<D>>{} : recording_.steps()[k - 1].regions_to,
+                       resampled_first))
+      return false;
     if (!phases.next("deforming")) return false;
     add_stats(result, surface_->step(deformation, 0.0, 1.0, false));
     return !resample || settle_points(k + 1, regions_to, resampled_after);

@@ -21,9 +21,9 @@ constexpr double kClosestCrossings = 0.70710678118654752;
 // A new point within a held region is dropped where a kept point lies this
 // near (in h): the region's own points cover it. Farther from every kept
 // point it fills a hole (a part of the surface that came into the region
-// without its points), and is kept by the seam's rule. A resample's points lie
-// at most about 0.7 h from their nearest neighbour, so a held region's own
-// points leave no new point that far.
+// without its points), and is kept by the seam's rule. A resample leaves its
+// points at most about 1.41 h from their nearest neighbour, so where the
+// region's own points are, a new point has one of them within this.
 constexpr double kHeldCover = 1.5;
 
 // The smallest distance between two of `positions`, if one is below `most`;
@@ -106,28 +106,22 @@ SpliceCounts splice_points(PointSet<D>& points, std::vector<float>* strain, cons
   }
   PointIndex<D> seam_index;
   seam_index.build(seam_points, grid.origin(), kHeldCover * h);  // as wide as the farthest query
-  auto crowds = [&](const Vec<D>& q) {
+  // Whether a kept point near the seam lies closer to q than `radius`.
+  auto kept_within = [&](const Vec<D>& q, double radius) {
     bool near = false;
-    seam_index.for_each_within(q, crowding, [&](std::uint32_t, const Vec<D>& p) {
-      near = near || (p - q).squaredNorm() < crowding * crowding;
-    });
-    return near;
-  };
-  auto covered = [&](const Vec<D>& q) {
-    bool near = false;
-    seam_index.for_each_within(q, kHeldCover * h, [&](std::uint32_t, const Vec<D>& p) {
-      near = near || (p - q).squaredNorm() <= kHeldCover * kHeldCover * h * h;
+    seam_index.for_each_within(q, radius, [&](std::uint32_t, const Vec<D>& p) {
+      near = near || (p - q).squaredNorm() < radius * radius;
     });
     return near;
   };
   for (std::size_t k = 0; k < fresh.size(); ++k) {
     if (fresh_ring(k) > farthest) continue;
     const Vec<D>& q = fresh.positions[k];
-    if (fresh_held[k] && covered(q)) {
+    if (fresh_held[k] && kept_within(q, kHeldCover * h)) {
       ++counts.covered;
       continue;
     }
-    if (claimed.find(Grid<D>::key(nearest_vertex(q))) || crowds(q)) {
+    if (claimed.find(Grid<D>::key(nearest_vertex(q))) || kept_within(q, crowding)) {
       ++counts.dropped_at_seam;
       continue;
     }
