@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -225,4 +226,71 @@ TEST_CASE("metrics: a block sample's blocks are those whose hash is a multiple o
     if (every <= 100) CHECK(taken > 16000 / every / 2);  // the hash spreads the sample
   }
   CHECK_THROWS_AS(BlockSample<3>(1.0, 0), std::invalid_argument);
+}
+
+namespace {
+
+// A point's place against a block sample from its definition: its own block
+// sampled, else some other sampled block whose box grown by `reach` holds it.
+template <int D>
+BlockPlace place_by_definition(const BlockSample<D>& sample, const Vec<D>& p, double reach) {
+  const double side = sample.side();
+  IVec<D> block;
+  for (int a = 0; a < D; ++a) block[a] = static_cast<std::int64_t>(std::floor(p[a] / side));
+  if (sample.sampled(block)) return BlockPlace::inside;
+  bool near = false;
+  for_each_index_in_box<D>(block - IVec<D>::Ones(), block + IVec<D>::Ones(), [&](const IVec<D>& b) {
+    bool held = true;
+    for (int a = 0; a < D; ++a)
+      held = held && side * static_cast<double>(b[a]) - reach < p[a] && p[a] < side * static_cast<double>(b[a] + 1) + reach;
+    near = near || (held && sample.sampled(b));
+  });
+  return near ? BlockPlace::near : BlockPlace::away;
+}
+
+template <int D>
+void check_places_against_definition() {
+  const BlockSample<D> sample(1.0, 5);
+  const double reach = 0.25;
+  std::uint64_t state = 12345;
+  auto uniform = [&] {
+    state = block_hash(state + 0x9e3779b97f4a7c15ULL);
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  // Points in runs of a few per block (as a resample writes them), then
+  // shuffled, so the remembered neighbourhood is both reused and begun again.
+  std::vector<Vec<D>> points;
+  for (int run = 0; run < 4000; ++run) {
+    Vec<D> corner;
+    for (int a = 0; a < D; ++a) corner[a] = std::floor(uniform() * 40.0 - 20.0);
+    for (int k = 0; k < 6; ++k) {
+      Vec<D> p;
+      for (int a = 0; a < D; ++a) p[a] = corner[a] + uniform();
+      points.push_back(p);
+    }
+  }
+  std::vector<Vec<D>> shuffled = points;
+  for (std::size_t i = shuffled.size(); i > 1; --i) std::swap(shuffled[i - 1], shuffled[static_cast<std::size_t>(uniform() * static_cast<double>(i))]);
+  std::size_t counts[3] = {0, 0, 0}, wrong = 0;
+  for (const auto* order : {&points, &shuffled}) {
+    typename BlockSample<D>::Neighbourhood seen;
+    for (const Vec<D>& p : *order) {
+      const BlockPlace expected = place_by_definition(sample, p, reach);
+      wrong += sample.place(p, reach, seen) == expected ? 0 : 1;
+      wrong += sample.place(p, reach) == expected ? 0 : 1;
+      ++counts[static_cast<int>(expected)];
+    }
+  }
+  CHECK(wrong == 0);
+  // All three places occur, so the check covers each.
+  CHECK(counts[static_cast<int>(BlockPlace::away)] > 0);
+  CHECK(counts[static_cast<int>(BlockPlace::near)] > 0);
+  CHECK(counts[static_cast<int>(BlockPlace::inside)] > 0);
+}
+
+}  // namespace
+
+TEST_CASE("metrics: a block sample places points as its definition says, remembering a block's neighbours or not") {
+  check_places_against_definition<2>();
+  check_places_against_definition<3>();
 }

@@ -4,9 +4,11 @@
 // grid chosen by a hash of their coordinates, one in `every`. The choice
 // depends on the places alone, so it is the same for any thread count and
 // point order.
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -48,9 +50,27 @@ class BlockSample {
     return std::rotr(block_hash(Grid<D>::key(block)) * odd_inverse_, twos_) <= most_multiple_;
   }
 
+  // What a pass has learnt of one block's neighbourhood: which of its 3^D
+  // blocks (itself and those across a face, edge or corner; bit
+  // sum_a (step_a + 1) 3^a for the steps of -1, 0, 1 along each axis) it has
+  // hashed, and which of those are sampled. A pass meets a block's points in
+  // runs (a resample writes them in grid order), so a point mostly reads its
+  // blocks' answers here instead of hashing up to 2^D blocks.
+  struct Neighbourhood {
+    IVec<D> block = IVec<D>::Constant(std::numeric_limits<std::int64_t>::min());
+    std::uint32_t known = 0;
+    std::uint32_t sampled = 0;
+  };
+
   // Where p lies against the sample, within `reach` (at most the side) of its
   // blocks: its own block, or one across a face, edge or corner that is that near.
   BlockPlace place(const Vec<D>& p, double reach) const {
+    Neighbourhood fresh;
+    return place(p, reach, fresh);
+  }
+
+  // The same, reading and filling `seen` (begun again when p is in another block).
+  BlockPlace place(const Vec<D>& p, double reach, Neighbourhood& seen) const {
     const double side = this->side();
     IVec<D> block;
     for (int a = 0; a < D; ++a) {
@@ -61,16 +81,22 @@ class BlockSample {
       const auto truncated = static_cast<std::int64_t>(x);
       block[a] = truncated - (x < static_cast<double>(truncated) ? 1 : 0);
     }
-    if (sampled(block)) return BlockPlace::inside;
+    if (block != seen.block) seen = Neighbourhood{block, 0, 0};
+    // The blocks p is near: per axis its own, and the one below or above
+    // where p lies within reach of that face.
     const Vec<D> offset = p - side * block.template cast<double>();
-    IVec<D> lo = block, hi = block;
+    std::uint32_t near_blocks = kAllNeighbours;
     for (int a = 0; a < D; ++a) {
-      if (offset[a] < reach) lo[a] -= 1;
-      if (offset[a] > side - reach) hi[a] += 1;
+      const unsigned steps = 2u | (offset[a] < reach ? 1u : 0u) | (offset[a] > side - reach ? 4u : 0u);
+      near_blocks &= kStepsAlong[a][steps];
     }
-    bool near = false;
-    for_each_index_in_box<D>(lo, hi, [&](const IVec<D>& b) { near = near || sampled(b); });
-    return near ? BlockPlace::near : BlockPlace::away;
+    for (std::uint32_t unknown = near_blocks & ~seen.known; unknown != 0; unknown &= unknown - 1) {
+      const int bit = std::countr_zero(unknown);
+      if (sampled(block + neighbour_step(bit))) seen.sampled |= std::uint32_t{1} << bit;
+    }
+    seen.known |= near_blocks;
+    if (seen.sampled & kOwnBlock) return BlockPlace::inside;
+    return (seen.sampled & near_blocks) != 0 ? BlockPlace::near : BlockPlace::away;
   }
 
   // A point's id and place, for the points a pass keeps.
@@ -87,8 +113,9 @@ class BlockSample {
     std::vector<OwnCacheLine<std::vector<Placed>>> parts(static_cast<std::size_t>(pool.threads()));
     pool.parallel_for(positions.size(), [&](std::size_t begin, std::size_t end, int block) {
       std::vector<Placed>& out = parts[static_cast<std::size_t>(block)].value;
+      Neighbourhood seen;
       for (std::size_t i = begin; i < end; ++i) {
-        const BlockPlace place = this->place(positions[i], reach);
+        const BlockPlace place = this->place(positions[i], reach, seen);
         if (place != BlockPlace::away) out.push_back({static_cast<std::uint32_t>(i), place});
       }
     });
@@ -98,6 +125,28 @@ class BlockSample {
   }
 
  private:
+  static constexpr int kNeighbours = D == 2 ? 9 : 27;  // 3^D
+  static constexpr std::uint32_t kAllNeighbours = (std::uint32_t{1} << kNeighbours) - 1;
+  static constexpr std::uint32_t kOwnBlock = std::uint32_t{1} << (kNeighbours / 2);  // every step 0
+
+  // The step of a neighbour's bit, digit by digit in base 3.
+  static IVec<D> neighbour_step(int bit) {
+    IVec<D> step;
+    for (int a = 0; a < D; ++a, bit /= 3) step[a] = bit % 3 - 1;
+    return step;
+  }
+  // kStepsAlong[a][s]: the neighbours whose step along axis a is among the
+  // set s (bit 0: -1, bit 1: 0, bit 2: +1).
+  static constexpr std::array<std::array<std::uint32_t, 8>, D> steps_along() {
+    std::array<std::array<std::uint32_t, 8>, D> table{};
+    for (int a = 0, weight = 1; a < D; ++a, weight *= 3)
+      for (unsigned set = 0; set < 8; ++set)
+        for (int bit = 0; bit < kNeighbours; ++bit)
+          if (set & (1u << ((bit / weight) % 3))) table[a][set] |= std::uint32_t{1} << bit;
+    return table;
+  }
+  static constexpr std::array<std::array<std::uint32_t, 8>, D> kStepsAlong = steps_along();
+
   static std::uint64_t at_least_one(std::uint64_t every) {
     if (every == 0) throw std::invalid_argument("a block sample takes one block in at least 1, got 0");
     return every;
