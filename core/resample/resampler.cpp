@@ -93,11 +93,20 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, const std::vec
   for (const Mask m : needed) stats_.vertices += static_cast<std::size_t>(std::popcount(m));
   signs_.assign(needed.size(), BrickSigns{});
 
+  // The needed vertices' values only, brick after brick: about a third of
+  // the slots on a surface, and no pass over the whole slot range.
+  value_first_.resize(needed.size());
+  std::size_t needed_so_far = 0;
+  for (std::size_t b = 0; b < needed.size(); ++b) {
+    value_first_[b] = needed_so_far;
+    needed_so_far += static_cast<std::size_t>(std::popcount(needed[b]));
+  }
+  values_.resize(needed_so_far);
+
   // One gather per brick serves its vertices here and, in locate_crossings(),
   // the root finding on every edge that starts in it: it holds every point
   // within Delta (with widened supports: whose Delta_i reaches) of the
   // brick's box of edges, [origin, origin + 4h]^D.
-  values_.resize(field_.slots());
   const double h = grid.spacing();
   const double box_side = h * static_cast<double>(VertexField<D>::kBrickSide);
   const double cube_reach = surface.radius() + 0.5 * h * std::sqrt(static_cast<double>(D));
@@ -137,7 +146,7 @@ void Resampler<D>::update_function(const AmlsSurface<D>& surface, const std::vec
         if (whole_cube) surface.evaluate_cube(neighbourhood, corners, corner_values);
         for (int v = 0; v < AmlsSurface<D>::kCubeCorners; ++v) {
           if (!((brick_needed >> locals[v]) & 1)) continue;
-          const Evaluation<D>& value = values_[first + locals[v]] =
+          const Evaluation<D>& value = value_at(first + locals[v]) =
               whole_cube ? corner_values[v] : surface.evaluate_in(neighbourhood, corners[v]);
           const auto bit = static_cast<Mask>(Mask{1} << locals[v]);
           if (value.defined) signs.defined |= bit;
@@ -156,7 +165,7 @@ const Evaluation<D>* Resampler<D>::vertex_value(const IVec<D>& vertex) const {
   const std::optional<std::uint32_t> slot = field_.find(vertex);
   if (!slot) return nullptr;
   const bool needed = (walk_.needed()[*slot / VertexField<D>::kBrickVolume] >> (*slot % VertexField<D>::kBrickVolume)) & 1;
-  return needed ? &values_[*slot] : nullptr;
+  return needed ? &value_at(*slot) : nullptr;
 }
 
 template <int D>
@@ -200,7 +209,7 @@ void Resampler<D>::list_crossings(Variant variant, double h, ThreadPool& pool) {
           const std::uint32_t from = first + l;
           const std::uint32_t to =
               (kEdges.inner[axis] >> l) & 1 ? from + stride : upper_first[axis] + l - last * stride;
-          out.push_back({from, to, axis, estimated_crossing(values_[from], values_[to], axis, h, variant), Vec<D>::Zero()});
+          out.push_back({from, to, axis, estimated_crossing(value_at(from), value_at(to), axis, h, variant), Vec<D>::Zero()});
         }
       }
     }
@@ -218,7 +227,7 @@ void Resampler<D>::drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid
       const Crossing& x = crossings_[c];
       Vec<D> q = grid.vertex_position(field_.vertex_of(x.from));
       q[x.axis] += x.t * h;
-      inside[c] = inside_rim(rim, h, q, Vec<D>(values_[x.from].gradient + values_[x.to].gradient));
+      inside[c] = inside_rim(rim, h, q, Vec<D>(value_at(x.from).gradient + value_at(x.to).gradient));
     }
   });
   const std::size_t listed = crossings_.size();
@@ -256,8 +265,8 @@ void Resampler<D>::locate_crossings(const AmlsSurface<D>& surface, Variant varia
     Vec<D> candidates_centre = Vec<D>::Zero();
     for (std::size_t c = begin; c < end; ++c) {
       Crossing& x = crossings_[c];
-      const Evaluation<D>& f0 = values_[x.from];
-      const Evaluation<D>& f1 = values_[x.to];
+      const Evaluation<D>& f0 = value_at(x.from);
+      const Evaluation<D>& f1 = value_at(x.to);
       SegmentRoot<D> root;
       bool past_edge = false;
       if (variant == Variant::exact) {

@@ -40,6 +40,7 @@
 // fixed and the choice at each vertex does not depend on it, so the result is
 // the same for any thread count, while the listing and the locating run in
 // parallel.
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -150,12 +151,26 @@ class Resampler {
 
   VertexField<D> field_;                // vertex <-> slot
   IdLists brick_points_;                // per brick: the points within Delta of its box
-  std::vector<Evaluation<D>> values_;   // slot -> F (valid where needed)
   WalkMarks<D> walk_;                   // the vertices the walk reads
+  using Mask = typename WalkMarks<D>::Mask;
+  // F at the needed vertices, brick by brick in slot order: a brick's first
+  // at value_first_[brick], the others after it in their local order.
+  std::vector<Evaluation<D>> values_;
+  std::vector<std::size_t> value_first_;
+  // F at a needed vertex's slot (the walk reads no other).
+  Evaluation<D>& value_at(std::uint32_t slot) {
+    return values_[value_index(slot)];
+  }
+  const Evaluation<D>& value_at(std::uint32_t slot) const { return values_[value_index(slot)]; }
+  std::size_t value_index(std::uint32_t slot) const {
+    const std::size_t brick = slot / VertexField<D>::kBrickVolume;
+    const std::uint32_t local = slot % VertexField<D>::kBrickVolume;
+    const auto below = static_cast<Mask>((std::uint64_t{1} << local) - 1);
+    return value_first_[brick] + static_cast<std::size_t>(std::popcount(static_cast<Mask>(walk_.needed()[brick] & below)));
+  }
   // Per brick, one bit per vertex (by local index): where F is defined, and
   // where it is also >= 0 (a zero counts as positive). The walk reads these
   // rather than the values, a few words per brick.
-  using Mask = typename WalkMarks<D>::Mask;
   struct BrickSigns {
     Mask defined = 0;
     Mask positive = 0;
