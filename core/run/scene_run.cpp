@@ -61,8 +61,12 @@ void probe(const AmlsSurface<D>& surface, const std::vector<Vec<D>>& probes, Thr
 // rim flags and bias offsets, one Delta further: three Delta, and these
 // points give F at the probes as all of them would (to rounding: the hash
 // orders them otherwise). Blocks much wider than the margin keep the fitted
-// points few: at 32 h, about 2.4 times the sampled blocks' own.
-constexpr double kEndBlock = 32.0;
+// points few: a surface's grow with the square of (side + 2 margin) / side
+// (at 64 h and Delta = 3h, about 2 times the sampled blocks' own on a sphere,
+// against 3 at 32 h), a curve's with its first power, where 32 h keeps enough
+// blocks on a short curve.
+template <int D>
+constexpr double kEndBlock = D == 2 ? 32.0 : 64.0;
 constexpr double kEndMargin = 3.0;
 
 // One run of a scene (see scene_run.hpp): the loop over the history's steps,
@@ -329,13 +333,13 @@ class SceneRunner {
 
   // Under `local`, F at the final probes: every k-th tracer on the surface
   // of all the points, or past max_probes tracers, the tracers in sampled
-  // blocks (about max_probes) on the surface of the points near them (kEndBlock):
+  // blocks (about max_probes) on the surface of the points near them (kEndBlock<D>):
   // a fit of a million points' normals would cost more than a few of the run's steps.
   // Widened supports reach farther than the margin: all the points then.
   void probe_final_local() {
     if (options_.max_probes > 0 && tracers_.size() > options_.max_probes && !scene_.widen_support) {
       const double margin = kEndMargin * scene_.radius_factor * report_.h;
-      const BlockSample<D> blocks(std::max(kEndBlock * report_.h, margin),
+      const BlockSample<D> blocks(std::max(kEndBlock<D> * report_.h, margin),
                                   (tracers_.size() + options_.max_probes - 1) / options_.max_probes);
       std::vector<Vec<D>> probes;
       for (const auto& t : blocks.placed(tracers_.positions, 0.0, pool()))
