@@ -97,7 +97,7 @@ void add_resample_command(CLI::App& app) {
       "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
       "output), else the step of the grid lines its points lie on (amls's output), else the median distance from a "
       "point (a mesh: a vertex) to its 4th nearest neighbour, halved, and for a mesh at most its longest side / 32 "
-      "(docs/real-data.md). Refused up front when the output would pass 50 million "
+      "and, for a closed one of large flat faces, at most its mean thickness 3V/A / 16 (docs/real-data.md). Refused up front when the output would pass 50 million "
       "points. Afterwards the coverage of the input by the output is measured; a clear loss (under 99 % of the "
       "input covered, or under 95 % of the output on the input) fails the command unless --accept-loss");
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .off, .xyz, .pwn, .csv, .txt, .obj)")

@@ -164,3 +164,50 @@ TEST_CASE("a coarse polyhedron gets an h fine enough for its shape, and its mesh
   const TriangleMesh mesh = read_mesh(dir.file("cube.ply"));
   CHECK(enclosed_volume(mesh.vertices, mesh.triangles) == doctest::Approx(8.0).epsilon(0.01));
 }
+
+TEST_CASE("a thin polyhedron gets h from its thickness, and its mesh the polyhedron's volume") {
+  // CGAL's beam.off: 0.4 x 0.4 x 3.6 in 8 vertices. At its longest side / 32
+  // the beam is 3.6 h thick and its rounded edges lost 12 % of the volume.
+  SurfaceInput input;
+  input.path = "beam";
+  input.is_mesh = true;
+  input.mesh = box_mesh(Vec<3>::Zero(), Vec<3>(0.4, 0.4, 3.6));
+  const MeshMeasures measures = measure_mesh(input.mesh);
+  CHECK(measures.volume == doctest::Approx(0.4 * 0.4 * 3.6));
+  CHECK(measures.mean_thickness == doctest::Approx(3.0 * 0.576 / (4 * 0.4 * 3.6 + 2 * 0.16)));
+  ShapeOpening opening;
+  opening.resampling.threads = 2;
+  ThreadPool pool(2);
+  const OpenedShape opened = open_shape(input, opening, pool);
+  CHECK(opened.spacing.h == doctest::Approx(measures.mean_thickness / 16));
+  CHECK(opened.spacing.reason.find("mean thickness") != std::string::npos);
+  REQUIRE(opened.closed_mesh);
+  PointSetResampling options = opening.resampling;
+  options.spacing = opened.spacing.h;
+  const ResampledPointSet<3> resampled = resample_point_set(opened.points, options);
+  amls::test::TempDir dir;
+  const MeshExport exported = export_resampled_mesh(dir.file("beam.ply"), resampled, options, &*opened.closed_mesh);
+  REQUIRE(exported.topology.closed());
+  CHECK(euler_characteristic(exported) == 2);
+  const TriangleMesh mesh = read_mesh(dir.file("beam.ply"));
+  // Measured -0.42 % (-12.2 % at the longest side / 32).
+  CHECK(enclosed_volume(mesh.vertices, mesh.triangles) == doctest::Approx(0.576).epsilon(0.01));
+}
+
+TEST_CASE("a smooth mesh dense in vertices keeps its vertices' h, coarser than its thickness bound") {
+  // A sphere of radius 1 in 1,106 vertices: its vertices' rule gives about
+  // r / 15, coarser than r / 16, but its vertices, not large flat faces,
+  // carry its shape (about 2 samples a vertex), and a smooth surface keeps
+  // its volume at that h.
+  SurfaceInput input;
+  input.path = "sphere";
+  input.is_mesh = true;
+  input.mesh = uv_sphere(1.0);
+  ShapeOpening opening;
+  opening.resampling.threads = 2;
+  ThreadPool pool(2);
+  const OpenedShape opened = open_shape(input, opening, pool);
+  CHECK(opened.spacing.h > measure_mesh(input.mesh).mean_thickness / 16);
+  CHECK(opened.spacing.reason.find("mean thickness") == std::string::npos);
+  CHECK(opened.spacing.reason.find("4th nearest neighbour") != std::string::npos);
+}

@@ -61,6 +61,22 @@ bool closed_and_consistently_wound(const TriangleMesh& mesh) {
   return !mesh.triangles.empty();
 }
 
+MeshMeasures measure_mesh(const TriangleMesh& mesh) {
+  const std::vector<Vec<3>>& v = mesh.vertices;
+  double volume6 = 0.0, area2 = 0.0;
+  for (const auto& t : mesh.triangles) {
+    volume6 += v[t[0]].dot(v[t[1]].cross(v[t[2]]));
+    area2 += (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).norm();
+  }
+  MeshMeasures out;
+  out.area = area2 / 2.0;
+  if (out.area > 0.0 && closed_and_consistently_wound(mesh)) {
+    out.volume = std::abs(volume6) / 6.0;
+    out.mean_thickness = 3.0 * out.volume / out.area;
+  }
+  return out;
+}
+
 MeshInside::MeshInside(const TriangleMesh& mesh) : mesh_(mesh), order_(mesh.triangles.size()) {
   for (std::uint32_t k = 0; k < order_.size(); ++k) order_[k] = k;
   nodes_.reserve(4 * order_.size() / kLeafTriangles + 1);

@@ -27,6 +27,17 @@ double winding_number(const TriangleMesh& mesh, const Vec<3>& x);
 // winding number is neither 0 nor +-1 around it.)
 bool closed_and_consistently_wound(const TriangleMesh& mesh);
 
+// A mesh's area and, where it bounds a solid (closed_and_consistently_wound),
+// the solid's volume and mean thickness 3 V / A: a ball's radius, 1.5 times a
+// slab's thickness, 0.75 times a square beam's side; the scale a grid must
+// resolve to keep the volume. Both 0 for a mesh that bounds no solid.
+struct MeshMeasures {
+  double area = 0.0;
+  double volume = 0.0;
+  double mean_thickness = 0.0;
+};
+MeshMeasures measure_mesh(const TriangleMesh& mesh);
+
 class MeshInside {
  public:
   // Keeps a reference to `mesh`, which must outlive this.
