@@ -69,9 +69,10 @@ TEST_CASE("collapse_slivers: vertices farther than the reach, or nowhere near a 
   CHECK(mesh.cells == before.cells);
 }
 
-TEST_CASE("collapse_slivers: two sheets meeting at one grid vertex are not pinched together") {
+TEST_CASE("collapse_slivers: two sheets meeting at one grid vertex are not pinched together, each merged on its own") {
   // Two cut tetrahedra whose cut apexes face each other across the grid vertex (0.3, 0.3, 0.3): merging the
-  // six vertices would join the two closed surfaces at one vertex, which is not a manifold.
+  // six vertices would join the two closed surfaces at one vertex, which is not a manifold. Each cut (a
+  // polyhedron's corner beside a grid vertex, sheets of one surface) becomes its own vertex instead.
   SurfaceMesh<3> mesh;
   const Vec<3> v(0.3, 0.3, 0.3);
   const Vec<3> up(0.0, 0.0, 0.3);
@@ -80,8 +81,20 @@ TEST_CASE("collapse_slivers: two sheets meeting at one grid vertex are not pinch
   add_cut_tetrahedron(mesh, v + up + Vec<3>(-0.2, -0.2, 0), v + up + Vec<3>(0.3, -0.1, 0), v + up + Vec<3>(-0.1, 0.3, 0),
                       v + Vec<3>(0, 0, 0.002), 0.003);
   REQUIRE(mesh_topology(mesh).closed());
-  const SurfaceMesh<3> before = mesh;
-  CHECK(collapse_slivers(mesh, kGrid) == 0);
-  CHECK(mesh.cells == before.cells);
+  CHECK(collapse_slivers(mesh, kGrid) == 4);
+  CHECK(mesh.vertices.size() == 8);
+  CHECK(mesh.cells.size() == 8);
+  CHECK(mesh_topology(mesh).closed());
   CHECK(euler_characteristic(mesh) == 4);
+  // Still two surfaces apart: the lower tetrahedron's triangles use none of the upper one's vertices.
+  std::vector<int> side(mesh.vertices.size(), 0);
+  bool shared = false;
+  for (const auto& t : mesh.cells) {
+    const int mine = mesh.vertices[t[0]].z() + mesh.vertices[t[1]].z() + mesh.vertices[t[2]].z() < 3 * v.z() ? 1 : 2;
+    for (std::uint32_t u : t) {
+      shared = shared || (side[u] != 0 && side[u] != mine);
+      side[u] = mine;
+    }
+  }
+  CHECK_FALSE(shared);
 }

@@ -102,6 +102,45 @@ void cancel_folded_pairs(std::vector<Triangle>& kept, std::vector<std::uint32_t>
   ids.resize(out);
 }
 
+// The parts of `cluster` (ascending) that the edges of the live triangles join, each ascending,
+// in the order of their first vertex.
+std::vector<std::vector<std::uint32_t>> joined_parts(const std::vector<std::uint32_t>& cluster,
+                                                     const std::vector<Triangle>& cells,
+                                                     const std::vector<std::uint32_t>& first,
+                                                     const std::vector<std::uint32_t>& around,
+                                                     const std::vector<bool>& alive) {
+  // Union-find over the cluster's places.
+  std::vector<std::size_t> parent(cluster.size());
+  for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
+  auto root = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  auto place = [&](std::uint32_t u) {
+    const auto it = std::lower_bound(cluster.begin(), cluster.end(), u);
+    return it != cluster.end() && *it == u ? static_cast<std::size_t>(it - cluster.begin()) : cluster.size();
+  };
+  for (std::size_t k = 0; k < cluster.size(); ++k)
+    for (std::uint32_t c = first[cluster[k]]; c < first[cluster[k] + 1]; ++c) {
+      if (!alive[around[c]]) continue;
+      for (std::uint32_t u : cells[around[c]]) {
+        const std::size_t j = place(u);
+        if (j < cluster.size()) parent[root(j)] = root(k);
+      }
+    }
+  std::vector<std::vector<std::uint32_t>> parts;
+  std::vector<std::size_t> part_of(cluster.size(), cluster.size());
+  for (std::size_t k = 0; k < cluster.size(); ++k) {
+    std::size_t& part = part_of[root(k)];
+    if (part == cluster.size()) {
+      part = parts.size();
+      parts.emplace_back();
+    }
+    parts[part].push_back(cluster[k]);
+  }
+  return parts;
+}
+
 // V - E + F, and the facet counts, of the mesh: what a merge must keep.
 struct Shape {
   MeshTopology topology;
@@ -144,10 +183,12 @@ std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double r
   std::vector<Triangle> kept;
   std::vector<std::uint32_t> kept_ids;
   std::size_t removed = 0;
-  for (const std::vector<std::uint32_t>& cluster : clusters) {
-    const std::uint32_t v = cluster.front();
+  // Merges `group` (ascending) into its first vertex where the triangles around it close one fan
+  // afterwards; false (and nothing changed) where they do not.
+  auto merge = [&](const std::vector<std::uint32_t>& group) {
+    const std::uint32_t v = group.front();
     touched.clear();
-    for (std::uint32_t m : cluster)
+    for (std::uint32_t m : group)
       for (std::uint32_t k = first[m]; k < first[m + 1]; ++k)
         if (alive[around[k]]) touched.push_back(around[k]);
     std::sort(touched.begin(), touched.end());
@@ -155,7 +196,7 @@ std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double r
     kept.clear();
     kept_ids.clear();
     auto target = [&](std::uint32_t u) {
-      return std::binary_search(cluster.begin(), cluster.end(), u) ? v : merged_into[u];
+      return std::binary_search(group.begin(), group.end(), u) ? v : merged_into[u];
     };
     for (std::uint32_t c : touched) {
       const Triangle t{target(mesh.cells[c][0]), target(mesh.cells[c][1]), target(mesh.cells[c][2])};
@@ -164,21 +205,30 @@ std::size_t collapse_slivers(SurfaceMesh<3>& mesh, const Grid<3>& grid, double r
       kept_ids.push_back(c);
     }
     cancel_folded_pairs(kept, kept_ids);
-    if (!closes_one_fan(v, kept)) continue;
+    if (!closes_one_fan(v, kept)) return false;
     Vec<3> position = Vec<3>::Zero(), normal = Vec<3>::Zero();
-    for (std::uint32_t m : cluster) {
+    for (std::uint32_t m : group) {
       position += mesh.vertices[m];
       normal += mesh.normals[m];
       merged_into[m] = v;
     }
-    mesh.vertices[v] = position / static_cast<double>(cluster.size());
+    mesh.vertices[v] = position / static_cast<double>(group.size());
     if (normal.norm() > 0.0) mesh.normals[v] = normal.normalized();
     for (std::uint32_t c : touched) alive[c] = false;
     for (std::size_t k = 0; k < kept.size(); ++k) {
       alive[kept_ids[k]] = true;
       mesh.cells[kept_ids[k]] = kept[k];
     }
-    removed += cluster.size() - 1;
+    removed += group.size() - 1;
+    return true;
+  };
+  for (const std::vector<std::uint32_t>& cluster : clusters) {
+    if (merge(cluster)) continue;
+    // Two sheets of the surface near one grid vertex (a polyhedron's corner there) cannot become
+    // one vertex, but each sheet's own slivers can: the parts of the cluster that the mesh's edges
+    // join, each merged on its own.
+    for (const std::vector<std::uint32_t>& part : joined_parts(cluster, mesh.cells, first, around, alive))
+      if (part.size() >= 2) merge(part);
   }
   if (removed == 0) return 0;
   // Drop the dead triangles and the vertices no triangle uses any more (the merged ones, and any a
