@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <utility>
 
 #include "core/io/mesh_inside.hpp"
@@ -141,57 +142,62 @@ TEST_CASE("a closed input's mesh has the input's topology: a sharp fin gives no 
         doctest::Approx(enclosed_volume(shape.vertices, shape.triangles)).epsilon(0.03));
 }
 
-TEST_CASE("a coarse polyhedron gets an h fine enough for its shape, and its mesh the polyhedron's volume") {
-  // A cube's 8 vertices lie a side apart: their rule gives h = 1.41 on a side
-  // of 2, a grid of two cells that encloses tens of percent too much or too little.
+namespace {
+
+// A mesh read as a file would be, opened by the rules of `amls resample`.
+OpenedShape open_mesh(const std::string& name, TriangleMesh mesh) {
   SurfaceInput input;
-  input.path = "cube";
+  input.path = name;
   input.is_mesh = true;
-  input.mesh = box_mesh(Vec<3>::Zero(), Vec<3>::Constant(2.0));
+  input.mesh = std::move(mesh);
   ShapeOpening opening;
   opening.resampling.threads = 2;
   ThreadPool pool(2);
-  const OpenedShape opened = open_shape(input, opening, pool);
-  CHECK(opened.spacing.h == doctest::Approx(2.0 / 32));
+  return open_shape(std::move(input), opening, pool);
+}
+
+// The opened shape resampled at its h and exported with its closed input mesh;
+// REQUIREs that the mesh is closed, and returns its Euler characteristic and
+// enclosed volume.
+std::pair<long, double> closed_export(const std::string& name, const OpenedShape& opened) {
   REQUIRE(opened.closed_mesh);
-  PointSetResampling options = opening.resampling;
+  PointSetResampling options;
+  options.threads = 2;
   options.spacing = opened.spacing.h;
   const ResampledPointSet<3> resampled = resample_point_set(opened.points, options);
   amls::test::TempDir dir;
-  const MeshExport exported = export_resampled_mesh(dir.file("cube.ply"), resampled, options, &*opened.closed_mesh);
+  const MeshExport exported = export_resampled_mesh(dir.file(name + ".ply"), resampled, options, &*opened.closed_mesh);
   REQUIRE(exported.topology.closed());
-  CHECK(euler_characteristic(exported) == 2);
-  const TriangleMesh mesh = read_mesh(dir.file("cube.ply"));
-  CHECK(enclosed_volume(mesh.vertices, mesh.triangles) == doctest::Approx(8.0).epsilon(0.01));
+  const TriangleMesh mesh = read_mesh(dir.file(name + ".ply"));
+  return {euler_characteristic(exported), enclosed_volume(mesh.vertices, mesh.triangles)};
+}
+
+}  // namespace
+
+TEST_CASE("a coarse polyhedron gets an h fine enough for its shape, and its mesh the polyhedron's volume") {
+  // A cube's 8 vertices lie a side apart: their rule gives h = 1.41 on a side
+  // of 2, a grid of two cells that encloses tens of percent too much or too little.
+  const OpenedShape opened = open_mesh("cube", box_mesh(Vec<3>::Zero(), Vec<3>::Constant(2.0)));
+  CHECK(opened.spacing.h == doctest::Approx(2.0 / 32));
+  const auto [euler, volume] = closed_export("cube", opened);
+  CHECK(euler == 2);
+  CHECK(volume == doctest::Approx(8.0).epsilon(0.01));
 }
 
 TEST_CASE("a thin polyhedron gets h from its thickness, and its mesh the polyhedron's volume") {
   // CGAL's beam.off: 0.4 x 0.4 x 3.6 in 8 vertices. At its longest side / 32
   // the beam is 3.6 h thick and its rounded edges lost 12 % of the volume.
-  SurfaceInput input;
-  input.path = "beam";
-  input.is_mesh = true;
-  input.mesh = box_mesh(Vec<3>::Zero(), Vec<3>(0.4, 0.4, 3.6));
-  const MeshMeasures measures = measure_mesh(input.mesh);
+  const TriangleMesh beam = box_mesh(Vec<3>::Zero(), Vec<3>(0.4, 0.4, 3.6));
+  const MeshMeasures measures = measure_mesh(beam);
   CHECK(measures.volume == doctest::Approx(0.4 * 0.4 * 3.6));
   CHECK(measures.mean_thickness == doctest::Approx(3.0 * 0.576 / (4 * 0.4 * 3.6 + 2 * 0.16)));
-  ShapeOpening opening;
-  opening.resampling.threads = 2;
-  ThreadPool pool(2);
-  const OpenedShape opened = open_shape(input, opening, pool);
+  const OpenedShape opened = open_mesh("beam", beam);
   CHECK(opened.spacing.h == doctest::Approx(measures.mean_thickness / 16));
   CHECK(opened.spacing.reason.find("mean thickness") != std::string::npos);
-  REQUIRE(opened.closed_mesh);
-  PointSetResampling options = opening.resampling;
-  options.spacing = opened.spacing.h;
-  const ResampledPointSet<3> resampled = resample_point_set(opened.points, options);
-  amls::test::TempDir dir;
-  const MeshExport exported = export_resampled_mesh(dir.file("beam.ply"), resampled, options, &*opened.closed_mesh);
-  REQUIRE(exported.topology.closed());
-  CHECK(euler_characteristic(exported) == 2);
-  const TriangleMesh mesh = read_mesh(dir.file("beam.ply"));
+  const auto [euler, volume] = closed_export("beam", opened);
+  CHECK(euler == 2);
   // Measured -0.42 % (-12.2 % at the longest side / 32).
-  CHECK(enclosed_volume(mesh.vertices, mesh.triangles) == doctest::Approx(0.576).epsilon(0.01));
+  CHECK(volume == doctest::Approx(0.576).epsilon(0.01));
 }
 
 TEST_CASE("a smooth mesh dense in vertices keeps its vertices' h, coarser than its thickness bound") {
@@ -199,15 +205,9 @@ TEST_CASE("a smooth mesh dense in vertices keeps its vertices' h, coarser than i
   // r / 15, coarser than r / 16, but its vertices, not large flat faces,
   // carry its shape (about 2 samples a vertex), and a smooth surface keeps
   // its volume at that h.
-  SurfaceInput input;
-  input.path = "sphere";
-  input.is_mesh = true;
-  input.mesh = uv_sphere(1.0);
-  ShapeOpening opening;
-  opening.resampling.threads = 2;
-  ThreadPool pool(2);
-  const OpenedShape opened = open_shape(input, opening, pool);
-  CHECK(opened.spacing.h > measure_mesh(input.mesh).mean_thickness / 16);
+  const TriangleMesh sphere = uv_sphere(1.0);
+  const OpenedShape opened = open_mesh("sphere", sphere);
+  CHECK(opened.spacing.h > measure_mesh(sphere).mean_thickness / 16);
   CHECK(opened.spacing.reason.find("mean thickness") == std::string::npos);
   CHECK(opened.spacing.reason.find("4th nearest neighbour") != std::string::npos);
 }

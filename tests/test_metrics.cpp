@@ -277,7 +277,8 @@ void check_places_against_definition() {
     for (const Vec<D>& p : *order) {
       const BlockPlace expected = place_by_definition(sample, p, reach);
       wrong += sample.place(p, reach, seen) == expected ? 0 : 1;
-      wrong += sample.place(p, reach) == expected ? 0 : 1;
+      typename BlockSample<D>::Neighbourhood fresh;
+      wrong += sample.place(p, reach, fresh) == expected ? 0 : 1;
       ++counts[static_cast<int>(expected)];
     }
   }

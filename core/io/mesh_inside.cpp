@@ -70,10 +70,8 @@ MeshMeasures measure_mesh(const TriangleMesh& mesh) {
   }
   MeshMeasures out;
   out.area = area2 / 2.0;
-  if (out.area > 0.0 && closed_and_consistently_wound(mesh)) {
-    out.volume = std::abs(volume6) / 6.0;
-    out.mean_thickness = 3.0 * out.volume / out.area;
-  }
+  out.volume = std::abs(volume6) / 6.0;
+  if (out.area > 0.0) out.mean_thickness = 3.0 * out.volume / out.area;
   return out;
 }
 

@@ -27,10 +27,11 @@ double winding_number(const TriangleMesh& mesh, const Vec<3>& x);
 // winding number is neither 0 nor +-1 around it.)
 bool closed_and_consistently_wound(const TriangleMesh& mesh);
 
-// A mesh's area and, where it bounds a solid (closed_and_consistently_wound),
-// the solid's volume and mean thickness 3 V / A: a ball's radius, 1.5 times a
-// slab's thickness, 0.75 times a square beam's side; the scale a grid must
-// resolve to keep the volume. Both 0 for a mesh that bounds no solid.
+// A mesh's area, and the volume and mean thickness 3 V / A of the solid it
+// bounds: a ball's radius, 1.5 times a slab's thickness, 0.75 times a square
+// beam's side; the scale a grid must resolve to keep the volume. The last two
+// mean something only where the mesh bounds a solid, which this does not ask
+// (closed_and_consistently_wound, a pass over every edge, is the caller's).
 struct MeshMeasures {
   double area = 0.0;
   double volume = 0.0;

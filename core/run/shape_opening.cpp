@@ -38,7 +38,8 @@ SpacingChoice bound_by_thickness(const TriangleMesh& mesh, const SpacingChoice& 
   const MeshMeasures measures = measure_mesh(mesh);
   const double samples = measures.area / (choice.h * choice.h);
   const double bound = measures.mean_thickness / kMinThicknessCells;
-  if (!(bound > 0.0) || choice.h <= bound || samples <= kFewVerticesRatio * static_cast<double>(mesh.vertices.size()))
+  if (!(bound > 0.0) || choice.h <= bound || samples <= kFewVerticesRatio * static_cast<double>(mesh.vertices.size()) ||
+      !closed_and_consistently_wound(mesh))
     return choice;
   std::ostringstream reason;
   reason << "the mesh's mean thickness 3V/A (" << measures.mean_thickness << ") / " << kMinThicknessCells

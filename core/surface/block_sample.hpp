@@ -63,13 +63,8 @@ class BlockSample {
   };
 
   // Where p lies against the sample, within `reach` (at most the side) of its
-  // blocks: its own block, or one across a face, edge or corner that is that near.
-  BlockPlace place(const Vec<D>& p, double reach) const {
-    Neighbourhood fresh;
-    return place(p, reach, fresh);
-  }
-
-  // The same, reading and filling `seen` (begun again when p is in another block).
+  // blocks: its own block, or one across a face, edge or corner that is that
+  // near; reading and filling `seen` (begun again when p is in another block).
   BlockPlace place(const Vec<D>& p, double reach, Neighbourhood& seen) const {
     const double side = this->side();
     IVec<D> block;
