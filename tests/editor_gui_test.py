@@ -169,17 +169,19 @@ class Editor:
 
 
 def read_ply(path, coordinates=2):
-    """(x, y), or (x, y, z), of every point of a binary little-endian PLY with double properties, as the editor
-    writes."""
+    """(x, y), or (x, y, z), of every point of a binary little-endian PLY with double positions and normals, and
+    possibly the rim mark (a uchar), as the editor writes."""
     with open(path, "rb") as f:
         data = f.read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
     header = data[:end].decode().splitlines()
     count = int(next(l.split()[2] for l in header if l.startswith("element vertex")))
-    properties = [l.split()[2] for l in header if l.startswith("property")]
+    properties = [tuple(l.split()[1:3]) for l in header if l.startswith("property")]
     check("binary_little_endian" in header[1], "the export is binary PLY")
-    check(properties[:6] == ["x", "y", "z", "nx", "ny", "nz"], "the export has positions and normals")
-    stride = 8 * len(properties)
+    check([name for _, name in properties[:6]] == ["x", "y", "z", "nx", "ny", "nz"] and
+          all(kind == "double" for kind, _ in properties[:6]), "the export has positions and normals")
+    check(properties[6:] in ([], [("uchar", "rim")]), "the export has nothing but the rim mark besides")
+    stride = 8 * 6 + len(properties[6:])
     return [struct.unpack_from("<%dd" % coordinates, data, end + i * stride) for i in range(count)]
 
 

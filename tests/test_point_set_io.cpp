@@ -155,6 +155,11 @@ const std::string kXyzProperties = "property float x\nproperty float y\nproperty
 const std::string kTwoOrientedVertices = kAsciiHead + "element vertex 2\n" + kXyzProperties +
                                          "property float nx\nproperty float ny\nproperty float nz\nend_header\n";
 
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 bool warned(const LoadedPointSet& read, const std::string& text) {
   return read.warnings.size() == 1 && read.warnings[0].find(text) != std::string::npos;
 }
@@ -195,6 +200,43 @@ TEST_CASE("a flat 3D set stays 3D and an empty set round-trips") {
     CHECK(empty.dimension == 2);
     CHECK_FALSE(empty.has_normals);
   }
+}
+
+TEST_CASE("a resample's rim marks go into a PLY file and come back; other formats leave them out") {
+  TempDir dir;
+  PointSet<3> marked;
+  marked.add(Vec<3>(0.25, 0.5, 0.125), Vec<3>(1, 0, 0));
+  marked.add(Vec<3>(0.75, 0.5, 0.5), Vec<3>(-1, 0, 0), true);
+  marked.add(Vec<3>(0.5, 0.25, 0.5), Vec<3>(0, 1, 0));
+  REQUIRE(marked.rim == std::vector<std::uint8_t>{0, 1, 0});
+  for (const PointFileFormat format : kFormats) {
+    INFO("format " << to_string(format));
+    const std::string path = dir.file(std::string("marked") + extension_of(format));
+    write_point_set(path, marked, format);
+    const LoadedPointSet read = read_point_set(path);
+    CHECK(read.points.positions == marked.positions);
+    const bool ply = extension_of(format) == std::string(".ply");
+    CHECK(read.points.rim == (ply ? marked.rim : std::vector<std::uint8_t>{}));
+    // 2D sets keep theirs too.
+    PointSet<2> flat;
+    flat.add(Vec<2>(0.25, 0.5), Vec<2>(0, 1), true);
+    flat.add(Vec<2>(0.5, 0.5), Vec<2>(0, 1));
+    write_point_set(path, flat, format);
+    CHECK(read_point_set(path).points.rim == (ply ? flat.rim : std::vector<std::uint8_t>{}));
+  }
+  // Marks that are all 0 write no rim property: the file is the unmarked set's.
+  const std::string plain = dir.file("plain.ply"), zeros = dir.file("zeros.ply");
+  PointSet<3> unmarked = marked;
+  unmarked.rim.clear();
+  write_point_set(plain, unmarked, PointFileFormat::ply_binary_little_endian);
+  unmarked.rim.assign(unmarked.size(), 0);
+  write_point_set(zeros, unmarked, PointFileFormat::ply_binary_little_endian);
+  CHECK(read_all(plain) == read_all(zeros));
+  CHECK(read_point_set(plain).points.rim.empty());
+  // A `rim` property that is no integer is someone else's: ignored.
+  const std::string foreign = dir.file("foreign.ply");
+  write_file(foreign, kAsciiHead + "element vertex 1\n" + kXyzProperties + "property float rim\nend_header\n0 0 0 1\n");
+  CHECK(read_point_set(foreign).points.rim.empty());
 }
 
 TEST_CASE("the format follows the extension, in any case - other extensions are refused") {

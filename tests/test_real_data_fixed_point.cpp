@@ -40,16 +40,16 @@ double change(double before, double after) { return std::abs(after - before) / b
 
 }  // namespace
 
-TEST_CASE("real data, fixed point: sparse partial scans gain at most 1.5 % a resample once resampled") {
-  // hippo2's new points far from sparse old ones were taken for a sheet's
-  // edge and left out, and the next resample put them back: +1.89 % and
-  // +0.22 % before; +1.36 % and +0.03 % now.
+TEST_CASE("real data, fixed point: sparse partial scans gain at most 1 % a resample once resampled") {
+  // The rim each output carries is marked, and the next resample keeps it
+  // (PointSet::rim): before, it found the rim anew and missed a sixth of it
+  // (hippo2: +1.36 %, +0.03 %; oni: +5.42 %, +1.11 %). Now +0.79 %, -0.26 %
+  // and +3.90 %, +0.45 %.
   const Counts hippo = resample_three_times("points_3/hippo2.ply");
-  CHECK(change(hippo.first, hippo.second) <= 0.015);
-  CHECK(change(hippo.second, hippo.third) <= 0.015);
-  // oni's second resample still gains +5.4 % (docs/design.md says where);
-  // its third gained +2.15 % before, +1.11 % now.
+  CHECK(change(hippo.first, hippo.second) <= 0.01);
+  CHECK(change(hippo.second, hippo.third) <= 0.01);
+  // oni's second resample still gains most (docs/design.md says where).
   const Counts oni = resample_three_times("points_3/oni.ply");
-  CHECK(change(oni.first, oni.second) <= 0.06);
-  CHECK(change(oni.second, oni.third) <= 0.015);
+  CHECK(change(oni.first, oni.second) <= 0.045);
+  CHECK(change(oni.second, oni.third) <= 0.01);
 }

@@ -131,6 +131,24 @@ TEST_CASE("a point with neighbours on one side only is on the rim, its outward d
   CHECK_FALSE(rim_outward<2>(n2, both).has_value());
 }
 
+TEST_CASE("a point carried as rim stays on it across a neighbour that would bridge its gap, but not once surrounded") {
+  const Vec<3> n = Vec<3>::UnitZ();
+  std::vector<RimNeighbour<3>> half, whole;
+  for (int k = 0; k < 24; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 24.0;
+    const RimNeighbour<3> neighbour{Vec<3>(std::cos(a), std::sin(a), 0.01 * k), 3.5};
+    if (neighbour.offset.x() < -1e-9) half.push_back(neighbour);
+    if (k % 3 == 0) whole.push_back(neighbour);  // 45 degrees apart: surrounded
+  }
+  std::vector<RimNeighbour<3>> across = half;
+  across.push_back({Vec<3>(3.0, 0.2, 0.0), 3.5});
+  CHECK_FALSE(rim_outward<3>(n, across).has_value());
+  const std::optional<Vec<3>> carried = rim_outward<3>(n, across, true);
+  REQUIRE(carried.has_value());
+  CHECK(carried->x() > 0.99);
+  CHECK_FALSE(rim_outward<3>(n, whole, true).has_value());
+}
+
 TEST_CASE("the first row of new points inside a rim is not on the rim") {
   // Rim points 1.5 h apart on the line y = 0.5 h, the row half an h in, seen from its middle.
   const Vec<3> n = Vec<3>::UnitZ();
@@ -227,6 +245,53 @@ TEST_CASE("resampling a plane patch with a hole keeps the hole and the outer edg
   // notches the second resample finds inside the rim: its first resample
   // gains 1.4 % and moves 0.6 % of the points, the next ones nothing.
   check_fixed_point(input, grid, 0.015, 0.007);
+}
+
+TEST_CASE("a gap that the rim marks call a hole stays one, where the bridge test alone would fill it") {
+  // A patch of the plane and a strip beside it, 3 h apart: a gap narrower
+  // than the bridge (1.5 supports), which F spans. Unmarked, the facing
+  // edges are bridged, no rim, and a resample fills the gap; marked as a
+  // resample marks the rim it carries, they stay rim and the gap stays open.
+  const Grid<3> grid = Grid<3>::unit(64);
+  const double h = grid.spacing();
+  const double z = 0.503, edge = 0.5, strip = edge + 3.0 * h;
+  PointSet<3> unmarked;
+  std::vector<std::uint8_t> facing;
+  for (double x = 0.25; x <= strip + 2.0 * h; x += 0.7 * h) {
+    if (x > edge && x < strip) continue;
+    for (double y = 0.3; y <= 0.7; y += 0.7 * h) {
+      unmarked.add(Vec<3>(x, y, z), Vec<3>::UnitZ());
+      facing.push_back(x > edge - 0.7 * h && x < strip + 0.7 * h ? 1 : 0);
+    }
+  }
+  PointSet<3> marked = unmarked;
+  marked.rim = facing;
+  ThreadPool pool(2);
+  auto rim_at_the_gap = [&](const AmlsSurface<3>& surface) {
+    std::size_t count = 0;
+    for (const Vec<3>& p : surface.rim().samples().positions)
+      count += p.x() > edge - h && p.x() < strip + h && p.y() > 0.3 + 2.0 * h && p.y() < 0.7 - 2.0 * h ? 1 : 0;
+    return count;
+  };
+  // More than half an h into the gap, 2 h or more from its open ends (where
+  // the rim turns the strip's corners, a resample of the resample puts a
+  // point or two an h in from the strip).
+  auto in_the_gap = [&](const PointSet<3>& points) {
+    std::size_t count = 0;
+    for (const Vec<3>& p : points.positions)
+      count += p.x() > edge + 0.5 * h && p.x() < strip - 0.5 * h && p.y() > 0.3 + 2.0 * h && p.y() < 0.7 - 2.0 * h;
+    return count;
+  };
+  CHECK(rim_at_the_gap(ready_surface(unmarked, grid, pool)) == 0);
+  CHECK(in_the_gap(resample_at(unmarked, grid, pool)) > 20);
+  const std::size_t marked_rows = static_cast<std::size_t>(std::count(facing.begin(), facing.end(), 1));
+  CHECK(static_cast<double>(rim_at_the_gap(ready_surface(marked, grid, pool))) >= 0.8 * static_cast<double>(marked_rows));
+  const PointSet<3> out = resample_at(marked, grid, pool);
+  CHECK(in_the_gap(out) == 0);
+  // The rim it carried is marked in its turn, and the next resample keeps the gap too.
+  REQUIRE(out.rim.size() == out.size());
+  CHECK(std::count(out.rim.begin(), out.rim.end(), 1) > 40);
+  CHECK(in_the_gap(resample_at(out, grid, pool)) == 0);
 }
 
 TEST_CASE("a closed sphere is a fixed point of resampling too") {

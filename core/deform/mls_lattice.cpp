@@ -573,6 +573,7 @@ MlsLatticeStats MlsRestLattice<D>::map(const MlsDeformation<D>& map, const Point
   std::vector<std::size_t> exact_points(static_cast<std::size_t>(pool.threads()), 0);
   mapped.positions.resize(n);
   mapped.normals.resize(n);
+  if (&mapped != &points) mapped.rim = points.rim;
   // Cell by cell: a cell's corners are looked up once for all its points,
   // and its refinement checked once.
   pool.parallel_for(l.cells.size(), [&](std::size_t begin, std::size_t end, int block) {

@@ -130,12 +130,18 @@ struct Header {
 
 constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
-// Where the vertex element's properties go: slot 0..5 is x y z nx ny nz, -1 is
-// ignored. And where the faces are, if the file has any.
+// Where the vertex element's properties go: slot 0..5 is x y z nx ny nz,
+// kRimSlot the rim mark amls writes (PointSet::rim), -1 is ignored. And where
+// the faces are, if the file has any.
+constexpr int kRimSlot = 6;
+constexpr std::string_view kRimProperty = "rim";
+using VertexValues = std::array<double, kRimSlot + 1>;
+
 struct VertexLayout {
   std::size_t element = 0;
   std::vector<int> slot;
   bool has_normals = false;
+  bool has_rim = false;
   std::uint64_t vertex_count = 0;
   std::size_t face_element = kNone;   // the `face` element
   std::size_t face_property = kNone;  // its `vertex_indices` (or `vertex_index`) list
@@ -256,6 +262,11 @@ VertexLayout vertex_layout(const Header& header, const std::string& path) {
   layout.element = static_cast<std::size_t>(vertex - header.elements.begin());
   std::array<const Property*, 6> found{};
   for (const Property& p : vertex->properties) {
+    if (p.name == kRimProperty && !p.is_list && is_integer(p.type)) {
+      layout.slot.push_back(kRimSlot);
+      layout.has_rim = true;
+      continue;
+    }
     const int slot = coordinate_slot(p.name);
     layout.slot.push_back(slot);
     if (slot < 0) continue;
@@ -301,9 +312,10 @@ void check_count_fits(const Element& element, std::uint64_t bytes_per_item, std:
                  std::to_string(bytes_left) + " bytes follow");
 }
 
-void store(RawPointFile& raw, const std::array<double, 6>& v) {
+void store(RawPointFile& raw, const VertexLayout& layout, const VertexValues& v) {
   raw.points.positions.emplace_back(v[0], v[1], v[2]);
   raw.points.normals.emplace_back(v[3], v[4], v[5]);
+  if (layout.has_rim) raw.points.rim.push_back(v[kRimSlot] != 0.0 ? 1 : 0);
 }
 
 // ---- ASCII ----
@@ -344,7 +356,7 @@ void read_ascii_body(std::istream& in, std::uint64_t bytes_left, Header& header,
                          std::to_string(element.count) + " '" + element.name + "' items the header promises");
         split_words(line, words);
       } while (words.empty());  // blank lines carry nothing
-      std::array<double, 6> values{};
+      VertexValues values{};
       std::size_t w = 0;
       auto next_word = [&](const Property& p) {
         if (w == words.size())
@@ -385,7 +397,7 @@ void read_ascii_body(std::istream& in, std::uint64_t bytes_left, Header& header,
       if (w != words.size())
         fail_here(std::to_string(words.size() - w) + " values too many for a '" + element.name + "' item");
       if (is_vertex) {
-        store(raw, values);
+        store(raw, layout, values);
         raw.lines.push_back(header.lines);
       }
     }
@@ -469,19 +481,19 @@ class BinaryBody {
       take(static_cast<std::size_t>(n * record), element, first);
       for (std::uint64_t i = 0; i < n; ++i) {
         const unsigned char* bytes = buffer_.data() + i * record;
-        std::array<double, 6> values{};
+        VertexValues values{};
         for (std::size_t k = 0; k < element.properties.size(); ++k)
           if (layout->slot[k] >= 0)
             values[static_cast<std::size_t>(layout->slot[k])] =
                 decode(bytes + offsets[k], element.properties[k].type, swap_);
-        store(raw, values);
+        store(raw, *layout, values);
       }
     }
   }
 
  private:
   void read_item_with_lists(const Element& element, std::uint64_t item, const VertexLayout* layout, RawPointFile& raw) {
-    std::array<double, 6> values{};
+    VertexValues values{};
     for (std::size_t k = 0; k < element.properties.size(); ++k) {
       const Property& p = element.properties[k];
       if (!p.is_list) {
@@ -507,7 +519,7 @@ class BinaryBody {
       // length < 2^32 and an item is at most 8 bytes: no overflow.
       skip(static_cast<std::uint64_t>(length) * size_of(p.type), element, item);
     }
-    if (layout) store(raw, values);
+    if (layout) store(raw, *layout, values);
   }
 
   void truncated(const Element& element, std::uint64_t item) const {
@@ -593,6 +605,9 @@ void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool wit
   for (const std::string& comment : amls_comment_lines(dimension, spacing)) text += "comment " + comment + "\n";
   text += "element vertex " + std::to_string(points.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
   if (with_normals) text += "property double nx\nproperty double ny\nproperty double nz\n";
+  // The rim marks, so that resampling this file keeps its rim where this resample put it.
+  const bool with_rim = std::any_of(points.rim.begin(), points.rim.end(), [](std::uint8_t m) { return m != 0; });
+  if (with_rim) text += "property uchar " + std::string(kRimProperty) + "\n";
   text += "end_header\n";
   out.write(text);
   const int values = with_normals ? 6 : 3;
@@ -604,6 +619,7 @@ void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool wit
         if (k > 0) text += ' ';
         append_double(text, value(i, k));
       }
+      if (with_rim) text += points.rim[i] != 0 ? " 1" : " 0";
       text += '\n';
       out.write(text);
     }
@@ -611,7 +627,8 @@ void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool wit
   }
   const std::endian order =
       format == PointFileFormat::ply_binary_little_endian ? std::endian::little : std::endian::big;
-  char record[6 * sizeof(double)];
+  char record[6 * sizeof(double) + 1];
+  const std::size_t record_size = static_cast<std::size_t>(values) * sizeof(double) + (with_rim ? 1 : 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
     for (int k = 0; k < values; ++k) {
       char* bytes = record + k * sizeof(double);
@@ -619,7 +636,8 @@ void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool wit
       std::memcpy(bytes, &v, sizeof v);
       if (order != std::endian::native) std::reverse(bytes, bytes + sizeof v);
     }
-    out.write(std::string_view(record, static_cast<std::size_t>(values) * sizeof(double)));
+    if (with_rim) record[record_size - 1] = points.rim[i] != 0 ? 1 : 0;
+    out.write(std::string_view(record, record_size));
   }
 }
 

@@ -191,6 +191,7 @@ PointSet<2> to_2d(const PointSet<3>& points) {
   for (const Vec<3>& p : points.positions) out.positions.emplace_back(p.x(), p.y());
   out.normals.reserve(points.normals.size());
   for (const Vec<3>& n : points.normals) out.normals.emplace_back(n.x(), n.y());
+  out.rim = points.rim;
   return out;
 }
 
@@ -200,6 +201,7 @@ PointSet<3> to_3d(const PointSet<2>& points) {
   for (const Vec<2>& p : points.positions) out.positions.emplace_back(p.x(), p.y(), 0.0);
   out.normals.reserve(points.normals.size());
   for (const Vec<2>& n : points.normals) out.normals.emplace_back(n.x(), n.y(), 0.0);
+  out.rim = points.rim;
   return out;
 }
 

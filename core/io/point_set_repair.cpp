@@ -46,6 +46,7 @@ void keep_points(RawPointFile& raw, const std::vector<std::uint8_t>& keep, std::
     if (!keep[i]) continue;
     raw.points.positions[kept] = raw.points.positions[i];
     raw.points.normals[kept] = raw.points.normals[i];
+    if (i < raw.points.rim.size()) raw.points.rim[kept] = raw.points.rim[i];
     if (i < raw.lines.size()) raw.lines[kept] = raw.lines[i];
     if (i < raw.vertices.size()) raw.vertices[kept] = raw.vertices[i];
     if (i < flags.size()) flags[kept] = flags[i];
@@ -53,6 +54,7 @@ void keep_points(RawPointFile& raw, const std::vector<std::uint8_t>& keep, std::
   }
   raw.points.positions.resize(kept);
   raw.points.normals.resize(kept);
+  if (!raw.points.rim.empty()) raw.points.rim.resize(kept);
   if (!raw.lines.empty()) raw.lines.resize(kept);
   if (!raw.vertices.empty()) raw.vertices.resize(kept);
   if (!flags.empty()) flags.resize(kept);

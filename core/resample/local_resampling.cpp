@@ -146,7 +146,7 @@ LocalResampleStats LocalResampler<D>::resample(PointSet<D>& points, std::vector<
   auto points_within = [&](std::int64_t reach, const std::vector<std::uint32_t>& ids) {
     PointSet<D> out;
     for (const std::uint32_t i : ids)
-      if (ring[i] <= reach) out.add(points.positions[i], points.normals[i]);
+      if (ring[i] <= reach) out.add(points.positions[i], points.normals[i], points.on_rim(i));
     return out;
   };
 

@@ -94,7 +94,7 @@ SpliceCounts splice_points(PointSet<D>& points, std::vector<float>* strain, cons
       claimed.try_emplace(Grid<D>::key(nearest_vertex(points.positions[i])));
       seam_points.push_back(points.positions[i]);
     }
-    out.add(points.positions[i], points.normals[i]);
+    out.add(points.positions[i], points.normals[i], points.on_rim(i));
     if (strain) out_strain.push_back((*strain)[i]);
   }
   double crowding = 0.0;  // no kept point near: nothing to crowd
@@ -125,7 +125,7 @@ SpliceCounts splice_points(PointSet<D>& points, std::vector<float>* strain, cons
       ++counts.dropped_at_seam;
       continue;
     }
-    out.add(q, fresh.normals[k]);
+    out.add(q, fresh.normals[k], fresh.on_rim(k));
     if (strain) out_strain.push_back(0.0F);
     ++(fresh_ring(k) <= rings.region ? counts.inserted : counts.filled_at_seam);
   }

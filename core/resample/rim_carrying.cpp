@@ -157,6 +157,8 @@ void append_rim(CarriedRim<D>& carried, double h, PointSet<D>& out) {
   out.normals.resize(left);
   out.positions.insert(out.positions.end(), rim.begin(), rim.end());
   out.normals.insert(out.normals.end(), carried.points.normals.begin(), carried.points.normals.end());
+  out.rim.assign(left, 0);
+  out.rim.resize(out.size(), 1);
 }
 
 template CarriedRim<2> carry_rim<2>(const AmlsSurface<2>&, ThreadPool&);

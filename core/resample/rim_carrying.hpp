@@ -52,7 +52,8 @@ template <int D>
 bool inside_rim(const CarriedRim<D>& carried, double h, const Vec<D>& x, const Vec<D>& normal);
 
 // Drops the points of `out` (new points of the grid walk) closer than
-// kRimBand h to a rim point, then appends the rim points.
+// kRimBand h to a rim point, then appends the rim points, marked as rim
+// (PointSet::rim) so that the next resample keeps them there.
 template <int D>
 void append_rim(CarriedRim<D>& carried, double h, PointSet<D>& out);
 

@@ -25,6 +25,9 @@ void AmlsSurface<D>::set_points(PointSet<D> points) {
   if (points.normals.size() != points.positions.size())
     throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
                                 std::to_string(points.normals.size()) + " normals");
+  if (!points.rim.empty() && points.rim.size() != points.positions.size())
+    throw std::invalid_argument("point set has " + std::to_string(points.positions.size()) + " positions but " +
+                                std::to_string(points.rim.size()) + " rim marks");
   points_ = std::move(points);
   given_radii_.reset();
   rim_ = SurfaceRim<D>();
@@ -61,12 +64,15 @@ void AmlsSurface<D>::hash_points(ThreadPool& pool) {
   PointSet<D> sorted;
   sorted.positions.resize(order.size());
   sorted.normals.resize(order.size());
+  sorted.rim.resize(points_.rim.empty() ? 0 : order.size());
   std::vector<double> radii(given_radii_ ? order.size() : 0);
   pool.parallel_for(order.size(), [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       sorted.positions[k] = points_.positions[order[k]];
       sorted.normals[k] = points_.normals[order[k]];
     }
+    if (!sorted.rim.empty())
+      for (std::size_t k = begin; k < end; ++k) sorted.rim[k] = points_.rim[order[k]];
     if (given_radii_)
       for (std::size_t k = begin; k < end; ++k) radii[k] = (*given_radii_)[order[k]];
   });
@@ -220,8 +226,9 @@ template <int D>
 void AmlsSurface<D>::find_rim(ThreadPool& pool) {
   rim_ = SurfaceRim<D>();
   std::vector<std::uint32_t> candidates;
+  // A point carried as rim is tested whatever its centroid says.
   for (std::uint32_t i = 0; i < rim_candidates_.size(); ++i)
-    if (rim_candidates_[i]) candidates.push_back(i);
+    if (rim_candidates_[i] || points_.on_rim(i)) candidates.push_back(i);
   if (candidates.empty()) return;
   // Each candidate's neighbours within kRimReach supports (or whose own
   // support reaches that far), seen in its tangent plane. Their normals
@@ -246,7 +253,7 @@ void AmlsSurface<D>::find_rim(ThreadPool& pool) {
         if (j == i || offset.squaredNorm() > reach * reach || pseudo_normals_[j].dot(n) < kRimFacing) continue;
         neighbours.push_back({offset, 0.5 * kRimBridge * (own + support_radius(j))});
       }
-      outward[c] = rim_outward<D>(n, neighbours);
+      outward[c] = rim_outward<D>(n, neighbours, points_.on_rim(i));
     }
   });
   typename SurfaceRim<D>::Samples samples;

@@ -85,14 +85,14 @@ std::optional<Vec<3>> widest_gap(const Vec<3>& normal, std::span<const Vec<3>> o
 }  // namespace
 
 template <int D>
-std::optional<Vec<D>> rim_outward(const Vec<D>& normal, std::span<const RimNeighbour<D>> neighbours) {
+std::optional<Vec<D>> rim_outward(const Vec<D>& normal, std::span<const RimNeighbour<D>> neighbours, bool carried) {
   const std::optional<Vec<D>> outward = widest_gap(normal, nearest_offsets<D>(neighbours));
-  if (outward && bridged<D>(normal, *outward, neighbours)) return std::nullopt;
+  if (outward && !carried && bridged<D>(normal, *outward, neighbours)) return std::nullopt;
   return outward;
 }
 
-template std::optional<Vec<2>> rim_outward<2>(const Vec<2>&, std::span<const RimNeighbour<2>>);
-template std::optional<Vec<3>> rim_outward<3>(const Vec<3>&, std::span<const RimNeighbour<3>>);
+template std::optional<Vec<2>> rim_outward<2>(const Vec<2>&, std::span<const RimNeighbour<2>>, bool);
+template std::optional<Vec<3>> rim_outward<3>(const Vec<3>&, std::span<const RimNeighbour<3>>, bool);
 
 template <int D>
 SurfaceRim<D>::SurfaceRim(Samples samples, const Vec<D>& origin) : samples_(std::move(samples)) {

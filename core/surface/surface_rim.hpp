@@ -87,9 +87,14 @@ struct RimNeighbour {
 // or has too few neighbours to tell (3D: 2, 2D: 1). The kRimNeighbours
 // nearest decide the gap; the gap is bridged, and no rim, when any neighbour
 // lies across it within its bridge (tangentially, within 60 degrees of the
-// outward direction).
+// outward direction). A point `carried` as rim by the last resample is not
+// asked about bridges: that was decided where its rim was first found, and a
+// carried rim point that a notch of its own rim faces (the commonest false
+// bridge) would break the rim line there, letting the next resample's
+// crossings past it. It stays rim while its gap stays wider than kRimGap.
 template <int D>
-std::optional<Vec<D>> rim_outward(const Vec<D>& normal, std::span<const RimNeighbour<D>> neighbours);
+std::optional<Vec<D>> rim_outward(const Vec<D>& normal, std::span<const RimNeighbour<D>> neighbours,
+                                  bool carried = false);
 
 template <int D>
 class SurfaceRim {

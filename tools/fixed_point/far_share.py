@@ -3,12 +3,17 @@
 
     far_share.py A.ply B.ply H [FACTOR]     (FACTOR: 0.75 by default)
 
-A and B are amls outputs (binary little-endian PLY, double x y z first). Prints
+A and B are amls outputs (binary little-endian PLY, double x y z first; other
+scalar properties, such as the rim mark, are skipped). Prints
 the share as a percentage. Pure Python, no NumPy: a hash of cells as wide as
 the distance asked for, so each point of B looks at 27 cells.
 """
 import struct
 import sys
+
+# The bytes of each PLY scalar type (amls writes doubles, and a uchar rim mark).
+SIZES = {"char": 1, "uchar": 1, "int8": 1, "uint8": 1, "short": 2, "ushort": 2, "int16": 2, "uint16": 2,
+         "int": 4, "uint": 4, "int32": 4, "uint32": 4, "float": 4, "float32": 4, "double": 8, "float64": 8}
 
 
 def read_positions(path):
@@ -22,16 +27,17 @@ def read_positions(path):
             if line.startswith("element vertex"):
                 count = int(line.split()[2])
             elif line.startswith("property"):
-                if line.split()[1] != "double":
-                    sys.exit(f"{path}: expected double properties, got '{line}'")
-                properties.append(line.split()[2])
+                kind, name = line.split()[1:3]
+                if kind not in SIZES:
+                    sys.exit(f"{path}: expected scalar properties, got '{line}'")
+                properties.append((name, SIZES[kind]))
             elif line == "end_header":
                 break
             elif not line and f.tell() > 1 << 16:
                 sys.exit(f"{path}: no end_header")
-        if properties[:3] != ["x", "y", "z"]:
-            sys.exit(f"{path}: expected x y z first, got {properties[:3]}")
-        stride = 8 * len(properties)
+        if properties[:3] != [("x", 8), ("y", 8), ("z", 8)]:
+            sys.exit(f"{path}: expected double x y z first, got {properties[:3]}")
+        stride = sum(size for _, size in properties)
         data = f.read(stride * count)
     if len(data) != stride * count:
         sys.exit(f"{path}: truncated")
