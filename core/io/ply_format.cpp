@@ -606,6 +606,9 @@ void write_ply(FileSink& out, const PointSet<3>& points, int dimension, bool wit
   text += "element vertex " + std::to_string(points.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
   if (with_normals) text += "property double nx\nproperty double ny\nproperty double nz\n";
   // The rim marks, so that resampling this file keeps its rim where this resample put it.
+  if (!points.rim.empty() && points.rim.size() != points.size())
+    throw std::logic_error("write_ply: " + std::to_string(points.rim.size()) + " rim marks for " +
+                           std::to_string(points.size()) + " points");
   const bool with_rim = std::any_of(points.rim.begin(), points.rim.end(), [](std::uint8_t m) { return m != 0; });
   if (with_rim) text += "property uchar " + std::string(kRimProperty) + "\n";
   text += "end_header\n";
