@@ -44,9 +44,10 @@ void add_radius_factor_option(CLI::App& cmd, double& radius_factor) {
 
 void add_rims_option(CLI::App& cmd, bool& keep_rims) {
   cmd.add_option("--rims", keep_rims,
-                 "open surfaces keep their rims: rim samples are found, carried into the new points, and no point is "
-                 "placed beyond the rim line they draw (off: the paper's resampler, which extends an open surface's "
-                 "rim by up to a support at every resample; a closed surface is the same either way)")
+                 "open surfaces keep their rims: rim samples are found, carried into the new points and marked there "
+                 "(a PLY output keeps the marks, so that resampling it keeps its rim), and no point is placed beyond "
+                 "the rim line they draw (off: the paper's resampler, which extends an open surface's rim by up to a "
+                 "support at every resample; a closed surface is the same either way)")
       ->capture_default_str();
 }
 
