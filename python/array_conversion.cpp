@@ -50,6 +50,34 @@ std::vector<Vec<D>> vectors_from(const py::handle& array, const char* name, bool
   return out;
 }
 
+std::vector<std::uint8_t> rim_marks_from(const py::handle& rim, std::size_t count) {
+  if (rim.is_none()) return {};
+  const Array a = as_array(rim, "rim");
+  if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != count)
+    throw std::invalid_argument("rim: expected " + std::to_string(count) + " values, one per point, got shape " +
+                                py::str(py::getattr(rim, "shape", py::str("?"))).cast<std::string>());
+  std::vector<std::uint8_t> marks(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double v = a.data()[i];
+    if (v != 0.0 && v != 1.0)
+      throw std::invalid_argument("rim: values must be 0 or 1 (or False and True), got " + py::str(py::float_(v)).cast<std::string>() +
+                                  " at " + std::to_string(i));
+    marks[i] = v == 1.0 ? 1 : 0;
+  }
+  return marks;
+}
+
+template <int D>
+py::array_t<bool> rim_marks_of(const PointSet<D>& points) {
+  py::array_t<bool> out(static_cast<py::ssize_t>(points.size()));
+  bool* data = out.mutable_data();
+  for (std::size_t i = 0; i < points.size(); ++i) data[i] = points.on_rim(i);
+  return out;
+}
+
+template py::array_t<bool> rim_marks_of<2>(const PointSet<2>&);
+template py::array_t<bool> rim_marks_of<3>(const PointSet<3>&);
+
 template <int D>
 PointSet<D> point_set_from(const py::handle& points, const py::handle& normals) {
   PointSet<D> out;

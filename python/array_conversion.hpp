@@ -32,6 +32,14 @@ std::vector<Vec<D>> vectors_from(const py::handle& array, const char* name, bool
 template <int D>
 PointSet<D> point_set_from(const py::handle& points, const py::handle& normals);
 
+// Rim marks (PointSet::rim) from None (none) or a 1-D array of `count`
+// values, each 0 or 1 (or False and True).
+std::vector<std::uint8_t> rim_marks_from(const py::handle& rim, std::size_t count);
+
+// The marks of `points` as a bool array (n,), all False where it has none.
+template <int D>
+py::array_t<bool> rim_marks_of(const PointSet<D>& points);
+
 // One position (D,) or many (m, D): the vectors, and whether it was one.
 template <int D>
 std::vector<Vec<D>> positions_from(const py::handle& x, const char* name, bool& single);

@@ -31,19 +31,21 @@ py::tuple read_file(const std::filesystem::path& file, int dim) {
 }
 
 template <int D>
-void write_set(const std::string& path, const py::handle& points, const py::handle& normals, double spacing) {
-  const PointSet<D> set = point_set_from<D>(points, normals);
+void write_set(const std::string& path, const py::handle& points, const py::handle& normals, double spacing,
+               const py::handle& rim) {
+  PointSet<D> set = point_set_from<D>(points, normals);
+  set.rim = rim_marks_from(rim, set.size());
   const PointFileFormat format = format_from_extension(path);
   run_released([&] { write_point_set(path, set, format, spacing); });
 }
 
 void write_file(const std::filesystem::path& file, const py::handle& points, const py::handle& normals,
-                double spacing) {
+                double spacing, const py::handle& rim) {
   const std::string path = file.string();
   if (dimension_of(points, "points") == 2) {
-    write_set<2>(path, points, normals, spacing);
+    write_set<2>(path, points, normals, spacing, rim);
   } else {
-    write_set<3>(path, points, normals, spacing);
+    write_set<3>(path, points, normals, spacing, rim);
   }
 }
 
@@ -75,8 +77,8 @@ Raises FileNotFoundError for a missing file, IsADirectoryError for a directory, 
 that cannot be read or parsed (the message names the file and the line or vertex), ValueError for
 an extension no reader takes.)");
   m.def("write", &write_file, py::arg("path"), py::arg("points"), py::arg("normals") = py::none(),
-        py::arg("spacing") = 0.0,
-        R"(write(path, points, normals=None, spacing=0.0)
+        py::arg("spacing") = 0.0, py::arg("rim") = py::none(),
+        R"(write(path, points, normals=None, spacing=0.0, rim=None)
 
 Writes a point set as `amls resample --out` does: `.ply` (binary little endian, doubles) or `.xyz`
 (shortest decimals that read back bit for bit). A 2D set (n, 2) is written with z = 0 and an
@@ -86,6 +88,9 @@ Writes a point set as `amls resample --out` does: `.ply` (binary little endian, 
   normals   the same shape, or None to write none
   spacing   > 0: the grid spacing h the points were made at, recorded as `amls spacing h` so that
             reading the file back chooses the same h (resample's report gives it as "h")
+  rim       None, or one value per point, True (1) where the point is on an open surface's rim
+            (Surface.rim): a .ply file keeps the marks, so that resampling it keeps its rim; a
+            .xyz file has no room for them
 
 The file is written through a temporary file renamed over `path`. Raises ValueError for bad arrays
 (shape, non-finite or complex values, a zero normal among others) or an unknown extension, OSError

@@ -167,6 +167,9 @@ class Surface {
   py::object normals() {
     return visit([](auto& s) { return py::object(to_array(s.loop().points().normals)); });
   }
+  py::object rim() {
+    return visit([](auto& s) { return py::object(rim_marks_of(s.loop().points())); });
+  }
 
   py::object F(const py::object& x) {
     return visit([&](auto& s) {
@@ -270,6 +273,9 @@ The grid is the one `amls resample` would use for these points.)")
            py::arg("grid") = py::none(), py::arg("radius_factor") = 3.0, py::arg("variant") = "exact",
            py::arg("uniform_support") = false, py::arg("threads") = 1)
       .def_property_readonly("points", &Surface::points, "the current points, float64 (n, D) (a copy)")
+      .def_property_readonly("rim", &Surface::rim,
+                             "bool (n,): True where a resample carried the point as the rim of an open surface "
+                             "(write(..., rim=surface.rim) keeps the marks in a .ply file)")
       .def_property_readonly("normals", &Surface::normals, "the current points' unit normals, float64 (n, D)")
       .def_property_readonly("h", &Surface::h, "the grid spacing h")
       .def_property_readonly("dimension", &Surface::dimension, "2 or 3")

@@ -1,5 +1,6 @@
 """read and write: the core's formats round trip bit for bit; bad input raises, never crashes."""
 import os
+import re
 
 import numpy as np
 import pytest
@@ -92,3 +93,35 @@ def test_an_unknown_extension_raises_a_value_error(amls, tmp_path):
     with pytest.raises(ValueError, match="extension|.stl"):
         amls.write(str(tmp_path / "s.stl"), *sphere(10))
     assert not os.path.exists(tmp_path / "s.stl")
+
+
+def test_an_open_surfaces_rim_marks_go_into_a_ply_file_and_come_back(amls, tmp_path):
+    points, normals = sphere(3000)
+    cap = points[:, 2] > 0.6
+    surface = amls.Surface(points[cap], normals[cap], grid=64)
+    assert not surface.rim.any()  # a scan's points: no rim known yet
+    surface.resample()
+    marks = surface.rim
+    assert marks.dtype == np.bool_ and marks.shape == (len(surface.points),) and 20 < marks.sum() < len(marks) / 4
+    path = str(tmp_path / "cap.ply")
+    amls.write(path, surface.points, surface.normals, spacing=surface.h, rim=marks)
+    with open(path, "rb") as f:
+        assert b"property uchar rim\n" in f.read(400)
+    again = amls.Surface(path)
+    order = np.lexsort(surface.points.T)  # the surface keeps its points in its own order
+    order_again = np.lexsort(again.points.T)
+    assert np.array_equal(again.points[order_again], surface.points[order])
+    assert np.array_equal(again.rim[order_again], marks[order])
+    # None writes no marks; .xyz has no room for them.
+    amls.write(path, surface.points, surface.normals)
+    assert not amls.Surface(path).rim.any()
+
+
+@pytest.mark.parametrize("rim, message", [
+    (np.ones(5), "rim: expected 4 values, one per point, got shape (5,)"),
+    (np.array([0, 1, 2, 0]), "rim: values must be 0 or 1 (or False and True), got 2.0 at 2"),
+])
+def test_bad_rim_marks_raise_value_errors(amls, tmp_path, rim, message):
+    points, normals = sphere(4)
+    with pytest.raises(ValueError, match=re.escape(message)):
+        amls.write(str(tmp_path / "s.ply"), points, normals, rim=rim)
