@@ -60,8 +60,8 @@ std::vector<std::uint8_t> rim_marks_from(const py::handle& rim, std::size_t coun
   for (std::size_t i = 0; i < count; ++i) {
     const double v = a.data()[i];
     if (v != 0.0 && v != 1.0)
-      throw std::invalid_argument("rim: values must be 0 or 1 (or False and True), got " + py::str(py::float_(v)).cast<std::string>() +
-                                  " at " + std::to_string(i));
+      throw std::invalid_argument("rim: values must be 0 or 1 (or False and True), got " +
+                                  py::str(py::float_(v)).cast<std::string>() + " at " + std::to_string(i));
     marks[i] = v == 1.0 ? 1 : 0;
   }
   return marks;
