@@ -32,6 +32,7 @@ struct ResampleOptions {
   int dimension = 0;
   bool accept_loss = false;
   bool uniform_support = false;
+  bool one_pass = false;
 };
 
 template <int D>
@@ -51,6 +52,10 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
     std::cout << "support: Delta = " << options.resampling.radius_factor << " h, widened at "
               << result.widening.widened_points << " of " << input.size()
               << " points where the input is sparse (up to " << result.widening.widest << " Delta)\n";
+  if (result.first_pass_points > 0)
+    std::cout << "second pass: the first pass's " << result.first_pass_points
+              << " points resampled once more at h, since the input is sparser than h at "
+              << result.widening.widened_points << " points (--one-pass: one)\n";
   if (!options.mesh.empty())
     std::cout << "mesh: "
               << export_resampled_mesh(options.mesh, result, options.resampling, closed_input).summary()
@@ -90,8 +95,8 @@ void add_resample_command(CLI::App& app) {
   auto options = std::make_shared<ResampleOptions>();
   CLI::App* cmd = app.add_subcommand(
       "resample",
-      "resample a surface once on a grid (unit square/cube, or the input's padded bounding box when it lies "
-      "outside) and write the new points. Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D "
+      "resample a surface on a grid (unit square/cube, or the input's padded bounding box when it lies "
+      "outside) and write the new points: once, or twice where the input is sparser than h (--one-pass). Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D "
       "or 3D), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
       "mesh (.obj, .ply or .off with faces; sampled at h with face normals).\n"
       "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
@@ -120,6 +125,11 @@ void add_resample_command(CLI::App& app) {
       "--uniform-support", options->uniform_support,
       "one support Delta for every point, as the paper's tests use, instead of widening it where the input is "
       "sparse (docs/real-data.md, \"Uneven density\")");
+  cmd->add_flag("--one-pass", options->one_pass,
+                "resample once, as the paper does. By default an input sparser than h at 1 % of its points or more "
+                "(its supports widened there) gets a second pass: the first pass's points resampled at h, which fills the small holes "
+                "that F of the sparse input leaves, so that resampling the output again changes little "
+                "(docs/design.md, \"A second pass\")");
   cmd->add_flag("--accept-loss", options->accept_loss,
                 "exit 0 even when the output clearly misses part of the input (a warning is still printed)");
   add_radius_factor_option(*cmd, options->resampling.radius_factor);
@@ -130,6 +140,7 @@ void add_resample_command(CLI::App& app) {
     Stopwatch clock;
     options->resampling.variant = parse_variant(options->variant);
     options->resampling.widen_support = !options->uniform_support;
+    options->resampling.second_pass_where_sparse = !options->one_pass;
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
     if (!options->mesh.empty()) mesh_format_from_extension(options->mesh);

@@ -20,6 +20,13 @@ inline constexpr double kMostResampledPoints = 50e6;
 // samples count too (armadillo: 207,074 samples, 66,187 out, 263 MiB).
 inline constexpr double kMiBPerResampledPoint = 2.0 / 1024.0;
 
+// The share of an input's points with widened supports from which
+// PointSetResampling::second_pass_where_sparse makes a second pass. A raw scan
+// sparser than h has 1.5 to 40 % (CGAL's demo scans); an output of amls read
+// back at its own h has a few at its rim (hippo2.ply's: 5 of 11,082), and a
+// second pass there would double the work for nothing.
+inline constexpr double kSecondPassWidenedShare = 0.01;
+
 struct PointSetResampling {
   // h, by the first that is set:
   double spacing = 0.0;  // h itself, when positive
@@ -33,6 +40,15 @@ struct PointSetResampling {
   // --uniform-support; off for callers whose own surface uses one Delta.
   bool widen_support = false;
   bool keep_rims = AmlsParameters{}.keep_rims;  // AmlsParameters::keep_rims
+  // Where the supports were widened at kSecondPassWidenedShare of the input's
+  // points or more (the input is sparser than h), the first pass's points are
+  // resampled once more at h. The first pass
+  // upsamples a sparse scan with F from wide supports, and leaves small holes
+  // where those weights fall short or a sparse rim sample's wide reach cuts
+  // its crossings; F of the dense first pass fills them, so resampling the
+  // output again would still add 1 to 4 % of points and move more. The second
+  // pass is that resample, done here (docs/design.md, "A second pass").
+  bool second_pass_where_sparse = true;
   Variant variant = Variant::exact;
   int threads = 1;
   double most_points = kMostResampledPoints;  // the cost limits (check_resampling_cost)
@@ -93,6 +109,7 @@ struct ResampledPointSet {
   Grid<D> grid;
   StepStats stats;
   SupportWidening widening;
+  std::size_t first_pass_points = 0;  // the first pass's points when a second one was made, else 0
   SpacingStats spacing_h;  // nearest-neighbour spacing of the new points, in units of h
   Coverage coverage;       // of the input by the new points (core/geometry/coverage.hpp)
   RimReport rim;
