@@ -4,7 +4,8 @@
 On small generated 2D point sets (a circle of points with normals):
 - with no spacing option, h is the rule's and is printed with its reason, the
   coverage is printed and in the JSON, and the command exits 0;
-- a far part 12 x sparser is closed by the widened supports; with
+- a far part 12 x sparser is closed by the widened supports, with a second
+  pass at h (one with --one-pass, and on the dense circle alone); with
   --uniform-support it is lost at the dense part's h, exits 1 naming the
   loss, and --accept-loss exits 0 with a warning, writing the same file;
 - an h whose output would pass the point limit is refused before any work,
@@ -69,6 +70,25 @@ def main():
     if (code != 0 or "widened at 10 of 410 points" not in out
             or "coverage: 100.00 % of the 410 input points covered" not in out):
         fail(f"a sparse part: expected widened supports to close it, got {code}:\n{out}{err}")
+    # 10 of 410 points widened (over 1 %): a second pass at h, which --one-pass leaves out; the
+    # first pass is the same either way, and the dense circle alone makes one.
+    if r["passes"] != 1 or r["first_pass_points"] != r["points_out"]:
+        fail(f"the dense circle: expected one pass, got {r['passes']} ({r['first_pass_points']} first)")
+    passes = {}
+    for extra in ([], ["--one-pass"]):
+        json_path = os.path.join(work, f"both{len(extra)}.json")
+        code, out, err = run(amls, both, "--dim", "2", "--out", lost, "--json", json_path, *extra)
+        if code != 0 or ("second pass: the first pass's" in out) == bool(extra):
+            fail(f"passes with {extra}: expected exit 0 and the second pass's line only without --one-pass, "
+                 f"got {code}:\n{out}{err}")
+        with open(json_path) as f:
+            passes[bool(extra)] = json.load(f)
+    if passes[False]["passes"] != 2 or passes[True]["passes"] != 1:
+        fail(f"passes: expected 2 by default and 1 with --one-pass, got {passes[False]['passes']}, "
+             f"{passes[True]['passes']}")
+    if passes[False]["first_pass_points"] != passes[True]["points_out"]:
+        fail(f"the first pass's points ({passes[False]['first_pass_points']}) are not --one-pass's output "
+             f"({passes[True]['points_out']})")
     # With one Delta for all it is lost.
     code, out, err = run(amls, both, "--dim", "2", "--out", lost, "--uniform-support")
     if code != 1 or "the output misses part of the input: 10 of 410 input points" not in err:
