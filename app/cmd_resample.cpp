@@ -96,8 +96,8 @@ void add_resample_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "resample",
       "resample a surface on a grid (unit square/cube, or the input's padded bounding box when it lies "
-      "outside) and write the new points: once, or twice where the input is sparser than h (--one-pass). Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D "
-      "or 3D), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
+      "outside) and write the new points: once, or twice where the input is sparser than h (--one-pass). "
+      "Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
       "mesh (.obj, .ply or .off with faces; sampled at h with face normals).\n"
       "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
       "output), else the step of the grid lines its points lie on (amls's output), else the median distance from a "
@@ -126,10 +126,10 @@ void add_resample_command(CLI::App& app) {
       "one support Delta for every point, as the paper's tests use, instead of widening it where the input is "
       "sparse (docs/real-data.md, \"Uneven density\")");
   cmd->add_flag("--one-pass", options->one_pass,
-                "resample once, as the paper does. By default an input sparser than h at 1 % of its points or more "
-                "(its supports widened there) gets a second pass: the first pass's points resampled at h, which fills the small holes "
-                "that F of the sparse input leaves, so that resampling the output again changes little "
-                "(docs/design.md, \"A second pass\")");
+                "resample once, as the paper does. By default an input sparser than h at 1 % of its points or "
+                "more (its supports widened there) gets a second pass: the first pass's points resampled at h, "
+                "which fills the small holes that F of the sparse input leaves, so that resampling the output "
+                "again changes little (docs/design.md, \"A second pass where the input is sparse\")");
   cmd->add_flag("--accept-loss", options->accept_loss,
                 "exit 0 even when the output clearly misses part of the input (a warning is still printed)");
   add_radius_factor_option(*cmd, options->resampling.radius_factor);

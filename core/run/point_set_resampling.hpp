@@ -42,12 +42,12 @@ struct PointSetResampling {
   bool keep_rims = AmlsParameters{}.keep_rims;  // AmlsParameters::keep_rims
   // Where the supports were widened at kSecondPassWidenedShare of the input's
   // points or more (the input is sparser than h), the first pass's points are
-  // resampled once more at h. The first pass
-  // upsamples a sparse scan with F from wide supports, and leaves small holes
-  // where those weights fall short or a sparse rim sample's wide reach cuts
-  // its crossings; F of the dense first pass fills them, so resampling the
-  // output again would still add 1 to 4 % of points and move more. The second
-  // pass is that resample, done here (docs/design.md, "A second pass").
+  // resampled once more at h. The first pass upsamples a sparse scan with F
+  // from wide supports, and leaves small holes where those weights fall short
+  // or a sparse rim sample's wide reach cuts its crossings; F of the dense
+  // first pass fills them, so resampling the output again would still add 1
+  // to 4 % of points and move more. The second pass is that resample, done
+  // here (docs/design.md, "A second pass where the input is sparse").
   bool second_pass_where_sparse = true;
   Variant variant = Variant::exact;
   int threads = 1;
