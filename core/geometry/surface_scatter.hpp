@@ -11,7 +11,7 @@
 // curves lie in a disk around each point: near 0 (CGAL's kitten.xyz 0.08,
 // hippo1.ply 0.12; a scan of ragged parts, oni.ply, 0.36). Where the noise
 // is wider than the spacing the neighbours fill a ball instead: about 0.74
-// (sphere_20k.xyz, blobby.xyz, oneK.xyz). Figures: docs/real-data.md.
+// (sphere_20k.xyz, blobby.xyz, oneK.xyz: 0.73 to 0.74). Figures: docs/real-data.md.
 //
 // Scatter, measured only where the thickness says noisy: around each measured
 // point, its kScatterNeighbours nearest neighbours fitted with a quadric height
