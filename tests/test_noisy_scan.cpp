@@ -64,7 +64,8 @@ TEST_CASE("a clean surface is not noisy however it curves; a noisy one measures 
   CHECK(noisy.scatter < 1.1 * kNoise);
   // Too few points to tell noise from shape.
   const std::vector<Vec<3>> all = noisy_sphere(kNoise);
-  CHECK(surface_scatter<3>(std::vector<Vec<3>>(all.begin(), all.begin() + kScatterNeighbours)).thickness == 0.0);
+  CHECK(surface_scatter<3>(std::vector<Vec<3>>(all.begin(), all.begin() + SurfaceScatter::kScatterNeighbours))
+            .thickness == 0.0);
 }
 
 TEST_CASE("a clean scan keeps the h of its neighbours") {

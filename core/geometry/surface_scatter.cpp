@@ -68,7 +68,7 @@ double median_over_neighbourhoods(
     const std::vector<Vec<D>>& positions, const KdTree<D>& tree, int count,
     const std::function<double(const std::vector<Vec<D>>&, const std::vector<std::uint32_t>&)>& measure) {
   const std::size_t n = positions.size();
-  const std::size_t stride = (n + kMostScatterPoints - 1) / kMostScatterPoints;
+  const std::size_t stride = (n + SurfaceScatter::kMostPoints - 1) / SurfaceScatter::kMostPoints;
   std::vector<double> values;
   values.reserve(n / stride + 1);
   std::vector<std::uint32_t> ids;
@@ -85,12 +85,13 @@ double median_over_neighbourhoods(
 template <int D>
 SurfaceScatter surface_scatter(const std::vector<Vec<D>>& positions) {
   SurfaceScatter out;
-  if (positions.size() <= static_cast<std::size_t>(kScatterNeighbours)) return out;
+  if (positions.size() <= static_cast<std::size_t>(SurfaceScatter::kScatterNeighbours)) return out;
   KdTree<D> tree;
   tree.build(positions);
-  out.thickness = median_over_neighbourhoods<D>(positions, tree, kThicknessNeighbours, thickness_of<D>);
+  out.thickness = median_over_neighbourhoods<D>(positions, tree, SurfaceScatter::kThicknessNeighbours, thickness_of<D>);
   if (out.noisy())
-    out.scatter = median_over_neighbourhoods<D>(positions, tree, kScatterNeighbours, quadric_residual<D>);
+    out.scatter =
+        median_over_neighbourhoods<D>(positions, tree, SurfaceScatter::kScatterNeighbours, quadric_residual<D>);
   return out;
 }
 

@@ -30,15 +30,15 @@
 
 namespace amls {
 
-inline constexpr int kThicknessNeighbours = 16;
-inline constexpr double kNoisyThickness = 0.5;
-inline constexpr int kScatterNeighbours = 100;
-// At most this many points are measured (every k-th of a larger set, in its
-// order), which keeps the cost of a few million points in check; the median
-// of 20,000 values is as good as that of all.
-inline constexpr int kMostScatterPoints = 20000;
-
 struct SurfaceScatter {
+  static constexpr int kThicknessNeighbours = 16;
+  static constexpr double kNoisyThickness = 0.5;
+  static constexpr int kScatterNeighbours = 100;
+  // At most this many points are measured (every k-th of a larger set, in its
+  // order), which keeps the cost of a few million points in check; the median
+  // of 20,000 values is as good as that of all.
+  static constexpr int kMostPoints = 20000;
+
   double thickness = 0.0;  // the median ratio above (0: too few points to tell)
   double scatter = 0.0;    // the median residual above, in the points' units (0: not noisy, not measured)
   bool noisy() const { return thickness > kNoisyThickness; }

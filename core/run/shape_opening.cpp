@@ -67,9 +67,10 @@ SpacingChoice bound_by_scatter(const std::vector<Vec<D>>& positions, const Spaci
   if (!measured.noisy() || kMinScatterCells * measured.scatter <= choice.h) return choice;
   std::ostringstream reason;
   reason << kMinScatterCells << " x the points' scatter across the surface (" << measured.scatter
-         << ", the RMS residual of quadric fits to " << kScatterNeighbours << " neighbours), coarser than h = "
-         << choice.h << " from " << choice.reason << ": the points scatter by more than they lie apart (thickness "
-         << measured.thickness << "), and that h would resolve the noise, not the surface";
+         << ", the RMS residual of quadric fits to " << SurfaceScatter::kScatterNeighbours
+         << " neighbours), coarser than h = " << choice.h << " from " << choice.reason
+         << ": the points scatter by more than they lie apart (thickness " << measured.thickness
+         << "), and that h would resolve the noise, not the surface";
   return {kMinScatterCells * measured.scatter, reason.str()};
 }
 
