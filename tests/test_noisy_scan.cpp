@@ -24,18 +24,22 @@ constexpr std::size_t kPoints = 8000;
 // Wider than the points' spacing on the unit sphere (about 0.04 between nearest neighbours).
 constexpr double kNoise = 0.05;
 
+// A standard normal deviate (Box-Muller) from mt19937's raw bits, which are
+// the same on every platform, unlike std::normal_distribution's results; the
+// two draws are sequenced, as operands of one expression would not be.
+double standard_normal(std::mt19937& bits) {
+  auto uniform = [&bits] { return (static_cast<double>(bits()) + 0.5) / 4294967296.0; };
+  const double radius = std::sqrt(-2.0 * std::log(uniform()));
+  return radius * std::cos(2.0 * std::numbers::pi * uniform());
+}
+
 // Samples of the unit sphere with their radii scattered by a normal law of
-// standard deviation `noise` (Box-Muller over mt19937's raw bits, which are
-// the same on every platform, unlike std::normal_distribution's results).
+// standard deviation `noise`.
 std::vector<Vec<3>> noisy_sphere(double noise) {
   const PointSet<3> sphere = sample_sphere(Vec<3>::Zero(), 1.0, kPoints);
   std::mt19937 bits(7);
-  auto uniform = [&bits] { return (static_cast<double>(bits()) + 0.5) / 4294967296.0; };
   std::vector<Vec<3>> out;
-  for (const Vec<3>& p : sphere.positions) {
-    const double gauss = std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * std::numbers::pi * uniform());
-    out.push_back(p * (1.0 + noise * gauss));
-  }
+  for (const Vec<3>& p : sphere.positions) out.push_back(p * (1.0 + noise * standard_normal(bits)));
   return out;
 }
 
@@ -66,6 +70,23 @@ TEST_CASE("a clean surface is not noisy however it curves; a noisy one measures 
   const std::vector<Vec<3>> all = noisy_sphere(kNoise);
   CHECK(surface_scatter<3>(std::vector<Vec<3>>(all.begin(), all.begin() + SurfaceScatter::kScatterNeighbours))
             .thickness == 0.0);
+}
+
+TEST_CASE("a curve's scatter: a noisy circle measures its noise, a clean one none") {
+  constexpr int kCurvePoints = 2000;  // 0.0031 apart on the unit circle
+  constexpr double kCurveNoise = 0.01;
+  std::mt19937 bits(11);
+  std::vector<Vec<2>> clean, noisy;
+  for (int i = 0; i < kCurvePoints; ++i) {
+    const double angle = 2.0 * std::numbers::pi * i / kCurvePoints;
+    clean.emplace_back(std::cos(angle), std::sin(angle));
+    noisy.push_back(clean.back() * (1.0 + kCurveNoise * standard_normal(bits)));
+  }
+  CHECK_FALSE(surface_scatter<2>(clean).noisy());
+  const SurfaceScatter measured = surface_scatter<2>(noisy);
+  CHECK(measured.noisy());
+  CHECK(measured.scatter > 0.7 * kCurveNoise);
+  CHECK(measured.scatter < 1.1 * kCurveNoise);
 }
 
 TEST_CASE("a clean scan keeps the h of its neighbours") {
