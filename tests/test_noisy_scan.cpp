@@ -56,7 +56,7 @@ OpenedShape open_points(const std::vector<Vec<3>>& positions) {
 
 }  // namespace
 
-TEST_CASE("a clean surface is not noisy however it curves; a noisy one measures its noise") {
+TEST_CASE("a clean surface is not noisy however it curves, and a noisy one measures its noise") {
   const SurfaceScatter clean = surface_scatter<3>(noisy_sphere(0.0));
   CHECK_FALSE(clean.noisy());
   CHECK(clean.thickness < 0.2);
