@@ -102,9 +102,11 @@ void add_resample_command(CLI::App& app) {
       "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
       "output), else the step of the grid lines its points lie on (amls's output), else the median distance from a "
       "point (a mesh: a vertex) to its 4th nearest neighbour, halved, and for a mesh at most its longest side / 32 "
-      "and, for a closed one of large flat faces, at most its mean thickness 3V/A / 16 (docs/real-data.md). Refused up front when the output would pass 50 million "
-      "points. Afterwards the coverage of the input by the output is measured; a clear loss (under 99 % of the "
-      "input covered, or under 95 % of the output on the input) fails the command unless --accept-loss");
+      "and, for a closed one of large flat faces, at most its mean thickness 3V/A / 16; for a point set whose points "
+      "scatter across the surface by more than they lie apart (a noisy raw scan), at least 4 times that scatter, so "
+      "that h resolves the surface, not the noise (docs/real-data.md). Refused up front when the output would pass "
+      "50 million points. Afterwards the coverage of the input by the output is measured; a clear loss (under 99 % "
+      "of the input covered, or under 95 % of the output on the input) fails the command unless --accept-loss");
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .off, .xyz, .pwn, .csv, .txt, .obj)")
       ->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();

@@ -7,7 +7,10 @@
 //   2. h: `resampling.spacing` or `resampling.grid` when given, else the rule
 //      of core/geometry/sample_spacing.hpp (the spacing the file records, else
 //      the grid lines its points lie on, else their 4th neighbours), on the
-//      file's points (a mesh: its vertices); a resampling at h is then checked
+//      file's points (a mesh: its vertices), and for a point set whose
+//      points scatter across the surface by more than they lie apart (a
+//      noisy raw scan) at least 4 times that scatter
+//      (core/geometry/surface_scatter.hpp); a resampling at h is then checked
 //      against the cost limits (check_resampling_cost);
 //   3. samples: a mesh sampled at h with face normals; a point set without
 //      normals gets them estimated over Delta = radius_factor h and oriented
