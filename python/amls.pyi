@@ -13,7 +13,10 @@ BoolArray = npt.NDArray[np.bool_]
 ArrayLike = npt.ArrayLike
 PathLike = Union[str, os.PathLike[str]]
 
-def read(path: PathLike, dim: int = 0) -> tuple[FloatArray, Optional[FloatArray]]: ...
+# with_rim=True adds the file's rim marks.
+def read(
+    path: PathLike, dim: int = 0, *, with_rim: bool = False
+) -> Union[tuple[FloatArray, Optional[FloatArray]], tuple[FloatArray, Optional[FloatArray], BoolArray]]: ...
 def write(
     path: PathLike, points: ArrayLike, normals: Optional[ArrayLike] = None, spacing: float = 0.0, rim: Optional[ArrayLike] = None
 ) -> None: ...
