@@ -13,7 +13,7 @@ BoolArray = npt.NDArray[np.bool_]
 ArrayLike = npt.ArrayLike
 PathLike = Union[str, os.PathLike[str]]
 
-# with_rim=True adds the file's rim marks.
+# with_rim=True adds the rim marks (before the report, in resample's case) to what read and resample return.
 def read(
     path: PathLike, dim: int = 0, *, with_rim: bool = False
 ) -> Union[tuple[FloatArray, Optional[FloatArray]], tuple[FloatArray, Optional[FloatArray], BoolArray]]: ...
@@ -34,7 +34,10 @@ def resample(
     dim: int = 0,
     threads: int = 1,
     mesh: str = "",
-) -> tuple[FloatArray, FloatArray, dict[str, Any]]: ...
+    rim: Optional[ArrayLike] = None,
+    one_pass: bool = False,
+    with_rim: bool = False,
+) -> Union[tuple[FloatArray, FloatArray, dict[str, Any]], tuple[FloatArray, FloatArray, BoolArray, dict[str, Any]]]: ...
 def mesh(
     points: Union[ArrayLike, PathLike],
     normals: Optional[ArrayLike] = None,
