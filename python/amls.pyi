@@ -13,7 +13,10 @@ BoolArray = npt.NDArray[np.bool_]
 ArrayLike = npt.ArrayLike
 PathLike = Union[str, os.PathLike[str]]
 
-def read(path: PathLike, dim: int = 0) -> tuple[FloatArray, Optional[FloatArray]]: ...
+# with_rim=True adds the rim marks (before the report, in resample's case) to what read and resample return.
+def read(
+    path: PathLike, dim: int = 0, *, with_rim: bool = False
+) -> Union[tuple[FloatArray, Optional[FloatArray]], tuple[FloatArray, Optional[FloatArray], BoolArray]]: ...
 def write(
     path: PathLike, points: ArrayLike, normals: Optional[ArrayLike] = None, spacing: float = 0.0, rim: Optional[ArrayLike] = None
 ) -> None: ...
@@ -31,7 +34,10 @@ def resample(
     dim: int = 0,
     threads: int = 1,
     mesh: str = "",
-) -> tuple[FloatArray, FloatArray, dict[str, Any]]: ...
+    rim: Optional[ArrayLike] = None,
+    one_pass: bool = False,
+    with_rim: bool = False,
+) -> Union[tuple[FloatArray, FloatArray, dict[str, Any]], tuple[FloatArray, FloatArray, BoolArray, dict[str, Any]]]: ...
 def mesh(
     points: Union[ArrayLike, PathLike],
     normals: Optional[ArrayLike] = None,

@@ -19,7 +19,7 @@ py::object normals_or_none(const PointSet<3>& points, bool has_normals, int dime
   return dimension == 2 ? py::object(to_array(to_2d(points).normals)) : py::object(to_array(points.normals));
 }
 
-py::tuple read_file(const std::filesystem::path& file, int dim) {
+py::tuple read_file(const std::filesystem::path& file, int dim, bool with_rim) {
   const std::string path = file.string();
   check_dim(dim);
   LoadedPointSet loaded;
@@ -27,7 +27,9 @@ py::tuple read_file(const std::filesystem::path& file, int dim) {
   warn_all(loaded.warnings);
   py::object positions = loaded.dimension == 2 ? py::object(to_array(to_2d(loaded.points).positions))
                                                : py::object(to_array(loaded.points.positions));
-  return py::make_tuple(positions, normals_or_none(loaded.points, loaded.has_normals, loaded.dimension));
+  py::object normals = normals_or_none(loaded.points, loaded.has_normals, loaded.dimension);
+  if (with_rim) return py::make_tuple(positions, normals, rim_marks_of(loaded.points));
+  return py::make_tuple(positions, normals);
 }
 
 template <int D>
@@ -59,20 +61,23 @@ py::tuple read_mesh_file(const std::filesystem::path& file) {
 }  // namespace
 
 void bind_files(py::module_& m) {
-  m.def("read", &read_file, py::arg("path"), py::arg("dim") = 0,
-        R"(read(path, dim=0) -> (points, normals)
+  m.def("read", &read_file, py::arg("path"), py::arg("dim") = 0, py::kw_only(), py::arg("with_rim") = false,
+        R"(read(path, dim=0, *, with_rim=False) -> (points, normals) or (points, normals, rim)
 
 Reads a point set, as `amls resample` does: PLY (ASCII, binary little and big endian), OFF, and text
 columns (.xyz, .pwn, .csv, .txt); the extension picks the format. The vertices of a PLY or OFF mesh
 are read as points (read_mesh reads the faces too).
 
-  path   the file (str or os.PathLike)
-  dim    2 or 3 forces the dimension; 0 (default): the file's `amls dim` comment, else 2 when every
-         z is 0 (with a warning), else 3
+  path      the file (str or os.PathLike)
+  dim       2 or 3 forces the dimension; 0 (default): the file's `amls dim` comment, else 2 when
+            every z is 0 (with a warning), else 3
+  with_rim  also return the rim marks: the PLY property `rim` that `amls resample` writes where
+            an open surface's rim is, so that write(..., rim=) and resample(..., rim=) keep them
 
 Returns points, a float64 array (n, 3) or (n, 2), and normals of the same shape, or None when the
-file has none. Small defects are repaired with a warning (UserWarning), as on the command line:
-non-finite points dropped, duplicates merged, bad normals re-estimated.
+file has none; with with_rim, also rim, a bool array (n,), True where a point is marked (all False
+when the file has no marks). Small defects are repaired with a warning (UserWarning), as on the
+command line: non-finite points dropped, duplicates merged, bad normals re-estimated.
 Raises FileNotFoundError for a missing file, IsADirectoryError for a directory, OSError for one
 that cannot be read or parsed (the message names the file and the line or vertex), ValueError for
 an extension no reader takes.)");

@@ -52,11 +52,12 @@ void resample_opened(const OpenedShape& shape, const std::string& input, PointSe
 // Opens the shape (h chosen, normals estimated) on the released thread.
 py::tuple resample(py::object points, py::object normals, py::object spacing, py::object grid, double radius_factor,
                    const std::string& variant, bool uniform_support, bool accept_loss, int dim, int threads,
-                   const std::string& mesh) {
+                   const std::string& mesh, py::object rim, bool one_pass, bool with_rim) {
   Stopwatch clock;
-  const ShapeArguments shape{std::move(points), std::move(normals), dim};
+  const ShapeArguments shape{std::move(points), std::move(normals), dim, std::move(rim)};
   ShapeOpening opening;
   opening.resampling = resampling_options(spacing, grid, radius_factor, variant, uniform_support, threads);
+  opening.resampling.second_pass_where_sparse = !one_pass;
   check_dim(dim);
   opening.dimension = dim;
   if (!mesh.empty()) mesh_format_from_extension(mesh);
@@ -87,6 +88,7 @@ py::tuple resample(py::object points, py::object normals, py::object spacing, py
     warn_all({out.loss_message + " (accepted: accept_loss=True)"});
   }
   const auto [positions, new_normals] = points_and_normals(out.points, out.dimension);
+  if (with_rim) return py::make_tuple(positions, new_normals, rim_marks_of(out.points), to_python(out.report));
   return py::make_tuple(positions, new_normals, to_python(out.report));
 }
 
@@ -135,12 +137,15 @@ void bind_resample(py::module_& m) {
   m.def("resample", &resample, py::arg("points"), py::arg("normals") = py::none(), py::kw_only(),
         py::arg("spacing") = py::none(), py::arg("grid") = py::none(), py::arg("radius_factor") = 3.0,
         py::arg("variant") = "exact", py::arg("uniform_support") = false, py::arg("accept_loss") = false,
-        py::arg("dim") = 0, py::arg("threads") = 1, py::arg("mesh") = "",
+        py::arg("dim") = 0, py::arg("threads") = 1, py::arg("mesh") = "", py::arg("rim") = py::none(),
+        py::arg("one_pass") = false, py::arg("with_rim") = false,
         R"(resample(points, normals=None, *, spacing=None, grid=None, radius_factor=3.0, variant="exact",
-         uniform_support=False, accept_loss=False, dim=0, threads=1, mesh="") -> (points, normals, report)
+         uniform_support=False, accept_loss=False, dim=0, threads=1, mesh="", rim=None, one_pass=False,
+         with_rim=False) -> (points, normals, report) or (points, normals, rim, report)
 
-`amls resample`: resamples a surface once on a grid (the unit square/cube, or the input's padded
-bounding box when it lies outside) and returns the new points. Input: a point set with normals, one
+`amls resample`: resamples a surface on a grid (the unit square/cube, or the input's padded
+bounding box when it lies outside) and returns the new points: once, or twice where the input is
+sparser than h (one_pass). Input: a point set with normals, one
 without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a file path
 (str or os.PathLike) of any format the command line reads - a point set, or a triangle mesh (.obj,
 or .ply or .off with faces; sampled at h with face normals).
@@ -166,13 +171,25 @@ unless accept_loss.
   threads          within [1, 256]; the result does not depend on it
   mesh             also write the new points' surface as a mesh (.obj, .ply; 2D: a polyline),
                    as `amls resample --mesh` does
+  rim              arrays only: None, or one value per point, True (1) where the point is on an
+                   open surface's rim (read(..., with_rim=True) or an earlier with_rim=True gives
+                   them): marked rim points stay on the rim, as a .ply file's marks do for
+                   `amls resample`; a file path brings its own marks, and rim= with one raises
+  one_pass         resample once, as the paper does (`--one-pass`). By default an input sparser
+                   than h at 1 % of its points or more (its supports widened there) gets a second
+                   pass: the first pass's points resampled at h, which fills the small holes that
+                   F of the sparse input leaves, so that resampling the output again changes little
+  with_rim         also return the new points' rim marks, as `amls resample` writes them into a
+                   .ply output
 
-Returns the new points and their normals (float64, the input's dimension) and the report: a dict
-with the keys of `amls resample --json` (h, points_in, points_out, spacing_h, coverage, rim,
-seconds, peak_memory_mib, ...; "output" is "" as nothing is written).
-Raises ValueError for arguments out of range or bad arrays (shape, NaN, complex, zero normals), when
-no h can be chosen (too few distinct points: give spacing or grid) and when h is past the cost
-limits (the message names the spacing that would fit); OSError for a file that cannot be read or
+Returns the new points and their normals (float64, the input's dimension), with with_rim their rim
+marks (bool (n,), True on an open surface's carried rim), and the report: a dict with the keys of
+`amls resample --json` (h, points_in, points_out, passes, first_pass_points, spacing_h, coverage,
+rim, seconds, peak_memory_mib, ...; "output" is "" as nothing is written).
+Raises ValueError for arguments out of range or bad arrays (shape, NaN, complex, zero normals, rim
+marks not one 0 or 1 per point, rim= with a file path), when no h can be chosen (too few distinct
+points: give spacing or grid) and when h is past the cost limits (the message names the spacing
+that would fit); OSError for a file that cannot be read or
 written (FileNotFoundError, IsADirectoryError, PermissionError where the system says so); and
 RuntimeError when the output misses part of the input (without accept_loss) or no point results.)");
   m.def("mesh", &mesh, py::arg("points"), py::arg("normals") = py::none(), py::kw_only(),

@@ -12,9 +12,10 @@ void check_dim(int dim) {
 
 std::string shape_path(const ShapeArguments& shape) {
   const py::object os_path = py::module_::import("os").attr("PathLike");
-  if (py::isinstance<py::str>(shape.points) || py::isinstance(shape.points, os_path))
-    return py::str(py::module_::import("os").attr("fspath")(shape.points)).cast<std::string>();
-  return "";
+  if (!py::isinstance<py::str>(shape.points) && !py::isinstance(shape.points, os_path)) return "";
+  if (!shape.rim.is_none())
+    throw std::invalid_argument("rim: only for arrays; a file's own marks (the PLY property rim) are used");
+  return py::str(py::module_::import("os").attr("fspath")(shape.points)).cast<std::string>();
 }
 
 SurfaceInput arrays_input(const ShapeArguments& shape) {
@@ -27,6 +28,7 @@ SurfaceInput arrays_input(const ShapeArguments& shape) {
                                         : point_set_from<3>(shape.points, shape.normals);
   // Without normals the set holds zero ones, as a file without normals reads.
   if (!loaded.has_normals) loaded.points.normals.assign(loaded.points.size(), Vec<3>::Zero());
+  loaded.points.rim = rim_marks_from(shape.rim, loaded.points.size());
   return input;
 }
 

@@ -106,6 +106,7 @@ def test_a_clear_loss_raises_unless_accepted(amls):
 
 def test_help_reads_like_the_command_lines(amls):
     text = amls.resample.__doc__
-    for phrase in ("the median distance from a point", "50 million", "radius_factor", "accept_loss", "threads"):
+    for phrase in ("the median distance from a point", "50 million", "radius_factor", "accept_loss", "threads",
+                   "one_pass", "--one-pass", "with_rim"):
         assert phrase in text
     assert os.path.exists(os.path.join(os.path.dirname(amls.__file__), "amls.pyi"))
