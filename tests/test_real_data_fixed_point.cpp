@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "core/geometry/kd_tree.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
 #include "real_data_files.hpp"
+#include "surface_fixtures.hpp"
 
 using namespace amls;
 using amls::test::data_file;
@@ -52,16 +52,8 @@ double change(const std::vector<Vec<3>>& before, const std::vector<Vec<3>>& afte
 
 // The share of `points` farther than `distance` from every point of `reference`.
 double far_share(const std::vector<Vec<3>>& reference, const std::vector<Vec<3>>& points, double distance) {
-  KdTree<3> tree;
-  tree.build(reference);
-  std::vector<std::uint32_t> ids;
-  std::vector<double> squared;
-  std::size_t far = 0;
-  for (const Vec<3>& p : points) {
-    tree.nearest(p, 1, ids, squared);
-    far += squared.front() > distance * distance ? 1 : 0;
-  }
-  return static_cast<double>(far) / static_cast<double>(points.size());
+  return static_cast<double>(amls::test::probes_in_holes(reference, points, distance)) /
+         static_cast<double>(points.size());
 }
 
 }  // namespace
