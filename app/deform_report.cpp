@@ -24,6 +24,13 @@ void print_summary(std::ostream& out, const SceneRunReport& r) {
                 r.points_initial, r.points_final, r.points_min, r.points_max, r.frames_measured,
                 r.resample && !local ? "resampled " : "", r.spacing_h.min, r.spacing_h.median, r.spacing_h.max);
   out << line;
+  if (r.start_first_pass_points > 0) {
+    std::snprintf(line, sizeof line,
+                  "start: the shape is sparser than h, so its first resample's %zu points were resampled once more "
+                  "at h\n",
+                  r.start_first_pass_points);
+    out << line;
+  }
   if (r.spacing_sampled_frames > 0) {
     std::snprintf(line, sizeof line, "spacing measured on an even sample of %zu points in the %zu frames larger than that\n",
                   r.spacing_sample, r.spacing_sampled_frames);

@@ -382,8 +382,10 @@ LocalDeformingSurface<D>& EditSession<D>::local_loop() {
 template <int D>
 void EditSession<D>::start_local(EditResult& result) {
   // Untouched points go in as loaded, as `amls deform` hands them over (see set_grid).
-  local_->set_points(recording_.untouched() ? initial_.points : surface_->points());
-  const LocalStepStats all = local_->resample_all();
+  const bool start = recording_.untouched();
+  local_->set_points(start ? initial_.points : surface_->points());
+  // The shape's own samples get the start's resample, as `amls deform` gives them.
+  const LocalStepStats all = start ? local_->resample_start() : local_->resample_all();
   add_stats(result, StepStats{all.timings, all.resample.normals, all.resample.resample, all.points_before,
                               all.points_after, {}});
   ++result.resamples;
@@ -471,7 +473,8 @@ EditResult EditSession<D>::resample_now(const WorkControl& control) {
   PointSet<D> before = surface.points();
   const bool finished = phases.run(surface.pool(), [&] {
     if (!phases.next(kResamplingPhase)) return false;
-    add_stats(result, surface.resample_only());
+    // The shape's own samples get the start's resample, as `amls deform` gives them.
+    add_stats(result, recording_.untouched() ? surface.resample_start() : surface.resample_only());
     result.resamples = 1;
     return true;
   });

@@ -86,6 +86,19 @@ StepStats DeformingSurface<D>::resample_only(const HeldRegions<D>& held) {
 }
 
 template <int D>
+StepStats DeformingSurface<D>::resample_start(bool second_pass_where_sparse) {
+  const StepStats first = resample_only();
+  if (!second_pass_where_sparse || !calls_for_second_pass(first.normals, first.points_before)) return first;
+  StepStats stats = resample_only();
+  stats.timings += first.timings;
+  stats.serial += first.serial;
+  stats.normals = first.normals;
+  stats.points_before = first.points_before;
+  stats.first_pass_points = first.points_after;
+  return stats;
+}
+
+template <int D>
 NormalStats DeformingSurface<D>::refresh_normals() {
   return surface_.update_normals(pool_);
 }

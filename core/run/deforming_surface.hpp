@@ -22,6 +22,20 @@ struct PhaseTimings {
   PhaseTimes phases() const;
 };
 
+// A start's resample (DeformingSurface::resample_start) makes a second pass
+// where the supports were widened at this share of its points or more. A raw
+// scan sparser than h has 1.5 to 40 % (CGAL's demo scans); an output of amls
+// read back at its own h a few at its rim (hippo2.ply's: 5 of 11,082), and a
+// second pass there would double the work for nothing.
+inline constexpr double kSecondPassWidenedShare = 0.01;
+
+// Whether a first resample whose normals' fits were `first`, over `points`
+// points, calls for a second pass.
+inline bool calls_for_second_pass(const NormalStats& first, std::size_t points) {
+  return static_cast<double>(first.widened) >= kSecondPassWidenedShare * static_cast<double>(points) &&
+         first.widened > 0;
+}
+
 struct StepStats {
   PhaseTimings timings;
   NormalStats normals;
@@ -31,6 +45,7 @@ struct StepStats {
   // Of each phase's seconds, those outside parallel loops: on one thread, the
   // part that more threads cannot share (core/util/parallel_stopwatch.hpp).
   PhaseTimings serial;
+  std::size_t first_pass_points = 0;  // a start's resample that made a second pass: the first pass's points
 };
 
 template <int D>
@@ -49,6 +64,17 @@ class DeformingSurface {
   // Resamples the current surface in place, with no deformation. The points
   // that `held` regions hold stay as they are (core/geometry/held_regions.hpp).
   StepStats resample_only(const HeldRegions<D>& held = {});
+  // The first resample of a shape's samples: resample_only(), then once more
+  // where its fits widened kSecondPassWidenedShare of the points or more (and
+  // `second_pass_where_sparse`). The first pass upsamples a scan sparser than h
+  // with F from wide supports and leaves small holes, one or two crossings
+  // wide, where those weights fall short or a sparse rim sample's wide reach
+  // cuts its crossings; F of the dense first pass fills them, so the next
+  // resample would still add 1 to 4 % of points and move more. The second
+  // pass is that resample, done at the start (docs/design.md, "A second pass
+  // where the input is sparse"). The stats: both passes' times, the first
+  // pass's fits (those of the shape's samples), the second's resample.
+  StepStats resample_start(bool second_pass_where_sparse = true);
 
   // Recomputes the pseudo-normals of the current points so that surface() can be evaluated.
   NormalStats refresh_normals();

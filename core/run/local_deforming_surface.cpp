@@ -72,6 +72,18 @@ LocalStepStats LocalDeformingSurface<D>::resample_all() {
 }
 
 template <int D>
+LocalStepStats LocalDeformingSurface<D>::resample_start(bool second_pass_where_sparse) {
+  const LocalStepStats first = resample_all();
+  if (!second_pass_where_sparse || !calls_for_second_pass(first.resample.normals, first.points_before)) return first;
+  LocalStepStats stats = resample_all();
+  stats.timings += first.timings;
+  stats.resample.normals = first.resample.normals;
+  stats.points_before = first.points_before;
+  stats.first_pass_points = first.points_after;
+  return stats;
+}
+
+template <int D>
 std::vector<Vec<D>> LocalDeformingSurface<D>::rest_handles() const {
   return rest_ ? rest_->handles : std::vector<Vec<D>>{};
 }

@@ -39,6 +39,7 @@ struct LocalStepStats {
   LocalResampleStats resample;
   std::size_t points_before = 0;
   std::size_t points_after = 0;
+  std::size_t first_pass_points = 0;  // resample_start() with a second pass: the first pass's points
 };
 
 template <int D>
@@ -55,6 +56,10 @@ class LocalDeformingSurface {
   void set_points(PointSet<D> points, std::vector<float> strain);
   // Resamples the whole surface now, with no deformation.
   LocalStepStats resample_all();
+  // The first resample of a shape's samples: resample_all(), with a second
+  // pass where DeformingSurface::resample_start() makes one, and the same
+  // stats (both passes' times, the first pass's fits).
+  LocalStepStats resample_start(bool second_pass_where_sparse = true);
   // One step: the handles move from deformation.from() to deformation.to();
   // the points follow and are resampled where strained. A step whose `from`
   // handles (or regions, kind, or alpha) are not the last step's `to` starts a new

@@ -188,14 +188,8 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
       widening.widest = std::max(widening.widest, widened / radius);
     }
   }
-  StepStats stats = surface.resample_only();
-  std::size_t first_pass_points = 0;
-  if (options.second_pass_where_sparse &&
-      static_cast<double>(widening.widened_points) >= kSecondPassWidenedShare * static_cast<double>(input.size())) {
-    first_pass_points = surface.points().size();
-    stats = surface.resample_only();
-  }
-  ResampledPointSet<D> out{surface.points(), grid, stats, widening, first_pass_points,
+  const StepStats stats = surface.resample_start(options.second_pass_where_sparse);
+  ResampledPointSet<D> out{surface.points(), grid, stats, widening, stats.first_pass_points,
                            spacing_stats(surface.points(), h), Coverage{}, RimReport{}};
   out.rim = rim_report(input_points, out.points, grid, parameters, options.threads);
   if (input.size() > static_cast<std::size_t>(kSpacingNeighbours)) {

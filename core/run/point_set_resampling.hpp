@@ -20,13 +20,6 @@ inline constexpr double kMostResampledPoints = 50e6;
 // samples count too (armadillo: 207,074 samples, 66,187 out, 263 MiB).
 inline constexpr double kMiBPerResampledPoint = 2.0 / 1024.0;
 
-// The share of an input's points with widened supports from which
-// PointSetResampling::second_pass_where_sparse makes a second pass. A raw scan
-// sparser than h has 1.5 to 40 % (CGAL's demo scans); an output of amls read
-// back at its own h has a few at its rim (hippo2.ply's: 5 of 11,082), and a
-// second pass there would double the work for nothing.
-inline constexpr double kSecondPassWidenedShare = 0.01;
-
 struct PointSetResampling {
   // h, by the first that is set:
   double spacing = 0.0;  // h itself, when positive
@@ -40,14 +33,8 @@ struct PointSetResampling {
   // --uniform-support; off for callers whose own surface uses one Delta.
   bool widen_support = false;
   bool keep_rims = AmlsParameters{}.keep_rims;  // AmlsParameters::keep_rims
-  // Where the supports were widened at kSecondPassWidenedShare of the input's
-  // points or more (the input is sparser than h), the first pass's points are
-  // resampled once more at h. The first pass upsamples a sparse scan with F
-  // from wide supports, and leaves small holes where those weights fall short
-  // or a sparse rim sample's wide reach cuts its crossings; F of the dense
-  // first pass fills them, so resampling the output again would still add 1
-  // to 4 % of points and move more. The second pass is that resample, done
-  // here (docs/design.md, "A second pass where the input is sparse").
+  // A second pass where the input is sparser than h
+  // (DeformingSurface::resample_start; `--one-pass` turns it off).
   bool second_pass_where_sparse = true;
   Variant variant = Variant::exact;
   int threads = 1;

@@ -46,6 +46,8 @@ nlohmann::json scene_report_json(const SceneRunReport& r) {
   j["status_reason"] = r.status_reason;
   j["broken_at_step"] = r.broken ? nlohmann::json(r.broken_at_step) : nlohmann::json(nullptr);
   j["points_initial"] = r.points_initial;
+  // The start's resample: 2 passes where the shape is sparser than h (DeformingSurface::resample_start).
+  j["start_passes"] = r.start_first_pass_points > 0 ? 2 : 1;
   j["points_final"] = r.points_final;
   j["points_min"] = r.points_min;
   j["points_max"] = r.points_max;

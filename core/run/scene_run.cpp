@@ -224,6 +224,7 @@ class SceneRunner {
     report_.quality_seconds += settled.quality_seconds;
     record.resampled = settled.resampled;
     if (record.resampled) {
+      if (step == 0) report_.start_first_pass_points = settled.stats.first_pass_points;
       record.timings = settled.stats.timings;
       record.failed_normal_fits = settled.stats.normals.failed();
       ++report_.resamples;
@@ -237,7 +238,8 @@ class SceneRunner {
   // where strained).
   bool local_frame(std::size_t step, SceneStepRecord& record) {
     if (step == 0) {
-      const LocalStepStats stats = local_->resample_all();
+      const LocalStepStats stats = local_->resample_start();
+      report_.start_first_pass_points = stats.first_pass_points;
       record.timings = stats.timings;
       local_resampled_ = true;
       local_failed_fits_ = stats.resample.normals.failed();

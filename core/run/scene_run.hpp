@@ -111,6 +111,9 @@ struct SceneRunReport {
   std::size_t broken_at_step = 0;  // the first step at which the surface was found broken (if broken)
 
   std::size_t points_initial = 0;  // of the initial shape's samples
+  // The start's resample made a second pass (a shape sparser than h,
+  // DeformingSurface::resample_start): its first pass's points; else 0.
+  std::size_t start_first_pass_points = 0;
   std::size_t points_final = 0;
   std::size_t points_min = 0;
   std::size_t points_max = 0;

@@ -14,7 +14,9 @@ std::optional<Settling> settle(DeformingSurface<D>& surface, const ResamplePolic
   out.resampled = policy_resamples(policy, step, surface, out.quality_seconds);
   if (!out.resampled) return out;
   if (gate && !gate(kResamplingPhase)) return std::nullopt;
-  out.stats = surface.resample_only(held);
+  // Step 0 resamples the shape's own samples: the start's resample, which
+  // fills a sparse scan's first holes at once (DeformingSurface::resample_start).
+  out.stats = step == 0 && held.empty() ? surface.resample_start() : surface.resample_only(held);
   return out;
 }
 

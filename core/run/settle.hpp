@@ -44,7 +44,7 @@ inline constexpr const char* kCheckingPhase = "checking the sampling";
 inline constexpr const char* kResamplingPhase = "resampling";
 
 // The points before step `step`: the policy decides, and S(P) is resampled in
-// place (DeformingSurface::resample_only), keeping the points that `held`
+// place (DeformingSurface::resample_only; before step 0, resample_start), keeping the points that `held`
 // regions hold (the region handles at their places before the step), if it
 // said so. Empty if `gate` stopped it; the surface is then as before unless
 // the resample had begun.

@@ -153,6 +153,7 @@ NormalStats AmlsSurface<D>::update_normals(ThreadPool& pool) {
     fit_normals(UniformSupport{1.0 / radius_}, status, pool);
   NormalStats stats;
   for (FitStatus s : status) stats.count(s);
+  stats.widened = wide_ids_.size();
   find_rim(pool);
   offsets_.clear();
   if constexpr (D == 3) {

@@ -73,6 +73,7 @@ struct NormalStats {
   std::size_t too_few_neighbours = 0;
   std::size_t degenerate = 0;
   std::size_t no_solution = 0;
+  std::size_t widened = 0;  // points whose support was widened (AmlsParameters::widen_support)
   std::size_t failed() const { return too_few_neighbours + degenerate + no_solution; }
   void count(FitStatus status) {
     switch (status) {
