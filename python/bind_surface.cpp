@@ -89,7 +89,7 @@ class SurfaceOf {
   }
 
   StepStats resample() {
-    const StepStats s = loop_.resample_only();
+    const StepStats s = resample_next();
     evaluable_ = true;
     return s;
   }
@@ -100,7 +100,7 @@ class SurfaceOf {
     const MlsDeformation<D> deformation(from_3d<D>(from.positions), from_3d<D>(to), from.kind, from.alpha);
     evaluable_ = false;
     if (!resample) return loop_.step(deformation, 0.0, 1.0, false);
-    StepStats s = loop_.resample_only();
+    StepStats s = resample_next();
     const StepStats deformed = loop_.step(deformation, 0.0, 1.0, false);
     s.timings += deformed.timings;
     s.points_after = deformed.points_after;
@@ -108,8 +108,18 @@ class SurfaceOf {
   }
 
  private:
+  // The first resample of the shape's own samples is a scene's start
+  // (DeformingSurface::resample_start: a second pass where they are sparser
+  // than h), so that a loop here stays a scene's bit for bit; later ones are one pass.
+  StepStats resample_next() {
+    const bool start = !resampled_;
+    resampled_ = true;
+    return start ? loop_.resample_start() : loop_.resample_only();
+  }
+
   DeformingSurface<D> loop_;
   bool evaluable_ = false;
+  bool resampled_ = false;
 };
 
 class Surface {
@@ -289,8 +299,10 @@ Positions (D,) or (m, D) moved onto S(P) by Newton's steps along F's fitted grad
 undefined.)")
       .def("resample", &Surface::resample, R"(resample() -> dict
 
-Resamples S(P) in place on the grid (no deformation). Returns the step's counts and timings
-(points_before, points_after, inserted, failed_normal_fits, timings_s).)")
+Resamples S(P) in place on the grid (no deformation). The first resample of the shape's own
+samples (here or in step) is a scene's start: where they are sparser than h (supports widened at
+1 % of them or more) it makes a second pass, as `amls resample` and `amls deform` do. Returns the
+step's counts and timings (points_before, points_after, inserted, failed_normal_fits, timings_s).)")
       .def("step", &Surface::step, py::arg("deformation"), py::arg("targets"), py::arg("resample") = true,
            R"(step(deformation, targets, resample=True) -> dict
 

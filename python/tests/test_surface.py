@@ -21,7 +21,7 @@ def drag_targets(step):
     return (1.0 - t) * start + t * end
 
 
-def write_scene(amls, path, points, normals):
+def write_scene(amls, path, points, normals, widen_support=False):
     """The drag as a scene whose shape is the file of these points."""
     amls.write(str(path.with_suffix(".ply")), points, normals)
     scene = {
@@ -30,6 +30,7 @@ def write_scene(amls, path, points, normals):
         "grid": {"spacing": H},
         "radius_factor": 3.0,
         "variant": "exact",
+        "widen_support": widen_support,
         "deformation": {"kind": "rigid", "alpha": 1.0},
         "stages": [{"handles": HANDLES, "targets": [{"steps": STEPS, "handles": drag_targets(STEPS).tolist()}]}],
     }
@@ -68,6 +69,26 @@ def test_a_python_drag_loop_gives_the_scenes_points(amls, tmp_path):
     surface.resample()  # the scene's final frame is a resample
     assert np.array_equal(surface.points, scene_points)
     assert np.array_equal(surface.normals, scene_normals)
+
+
+def test_a_sparse_shapes_python_loop_starts_as_the_scene_does(amls, tmp_path):
+    # The lower half 15 x sparser than h: the start's resample makes a second pass, in the scene and here.
+    dense, dense_normals = sphere(3000)
+    sparse, sparse_normals = sphere(200)
+    upper, lower = dense[:, 2] > 0.5, sparse[:, 2] <= 0.5
+    points = np.concatenate([dense[upper], sparse[lower]])
+    normals = np.concatenate([dense_normals[upper], sparse_normals[lower]])
+    scene = tmp_path / "sparse.json"
+    write_scene(amls, scene, points, normals, widen_support=True)
+    with pytest.warns(UserWarning, match="cannot be sampled more densely"):
+        scene_points, _, report = amls.run_scene(str(scene), tracers=1, threads=2)
+    assert report["start_passes"] == 2 and report["status"] == "ok"
+    surface = amls.Surface(points, normals, h=H)
+    deformation = amls.MlsDeformation(HANDLES, kind="rigid")
+    for step in range(1, STEPS + 1):
+        surface.step(deformation, drag_targets(step))
+    surface.resample()
+    assert np.array_equal(surface.points, scene_points)
 
 
 def test_a_curve_deforms_in_2d(amls):
