@@ -37,6 +37,7 @@ def resample(
     rim: Optional[ArrayLike] = None,
     one_pass: bool = False,
     with_rim: bool = False,
+    rims: bool = True,
 ) -> Union[tuple[FloatArray, FloatArray, dict[str, Any]], tuple[FloatArray, FloatArray, BoolArray, dict[str, Any]]]: ...
 def mesh(
     points: Union[ArrayLike, PathLike],

@@ -52,12 +52,13 @@ void resample_opened(const OpenedShape& shape, const std::string& input, PointSe
 // Opens the shape (h chosen, normals estimated) on the released thread.
 py::tuple resample(py::object points, py::object normals, py::object spacing, py::object grid, double radius_factor,
                    const std::string& variant, bool uniform_support, bool accept_loss, int dim, int threads,
-                   const std::string& mesh, py::object rim, bool one_pass, bool with_rim) {
+                   const std::string& mesh, py::object rim, bool one_pass, bool with_rim, bool rims) {
   Stopwatch clock;
   const ShapeArguments shape{std::move(points), std::move(normals), dim, std::move(rim)};
   ShapeOpening opening;
   opening.resampling = resampling_options(spacing, grid, radius_factor, variant, uniform_support, threads);
   opening.resampling.second_pass_where_sparse = !one_pass;
+  opening.resampling.keep_rims = rims;
   check_dim(dim);
   opening.dimension = dim;
   if (!mesh.empty()) mesh_format_from_extension(mesh);
@@ -138,10 +139,10 @@ void bind_resample(py::module_& m) {
         py::arg("spacing") = py::none(), py::arg("grid") = py::none(), py::arg("radius_factor") = 3.0,
         py::arg("variant") = "exact", py::arg("uniform_support") = false, py::arg("accept_loss") = false,
         py::arg("dim") = 0, py::arg("threads") = 1, py::arg("mesh") = "", py::arg("rim") = py::none(),
-        py::arg("one_pass") = false, py::arg("with_rim") = false,
+        py::arg("one_pass") = false, py::arg("with_rim") = false, py::arg("rims") = true,
         R"(resample(points, normals=None, *, spacing=None, grid=None, radius_factor=3.0, variant="exact",
          uniform_support=False, accept_loss=False, dim=0, threads=1, mesh="", rim=None, one_pass=False,
-         with_rim=False) -> (points, normals, report) or (points, normals, rim, report)
+         with_rim=False, rims=True) -> (points, normals, report) or (points, normals, rim, report)
 
 `amls resample`: resamples a surface on a grid (the unit square/cube, or the input's padded
 bounding box when it lies outside) and returns the new points: once, or twice where the input is
@@ -181,6 +182,9 @@ unless accept_loss.
                    F of the sparse input leaves, so that resampling the output again changes little
   with_rim         also return the new points' rim marks, as `amls resample` writes them into a
                    .ply output
+  rims             True (default): an open surface keeps its rims, as `--rims on`; False: the
+                   paper's resampler, which extends an open surface's rim by up to a support
+                   (`--rims off`; a closed surface is the same either way)
 
 Returns the new points and their normals (float64, the input's dimension), with with_rim their rim
 marks (bool (n,), True on an open surface's carried rim), and the report: a dict with the keys of

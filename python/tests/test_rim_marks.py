@@ -99,6 +99,18 @@ def test_one_pass_is_the_command_lines_one_pass(amls, tmp_path):
     assert amls.resample(points, normals, grid=SPARSE_GRID)[2]["passes"] == 2
 
 
+def test_rims_off_is_the_command_lines_rims_off(amls, tmp_path):
+    points, normals = open_cap()
+    amls.write(tmp_path / "cap.ply", points, normals)
+    run_cli("resample", tmp_path / "cap.ply", "--grid", GRID, "--rims", "off", "--out", tmp_path / "cli.ply")
+    amls.write(tmp_path / "py.ply", *amls.resample(points, normals, grid=GRID, rims=False)[:2], spacing=1 / GRID)
+    assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
+    # The paper's resampler runs the cap past its rim: more points, no marks.
+    kept, _, marks, _ = amls.resample(points, normals, grid=GRID, with_rim=True)
+    extended, _, no_marks, _ = amls.resample(points, normals, grid=GRID, rims=False, with_rim=True)
+    assert len(extended) > len(kept) and marks.any() and not no_marks.any()
+
+
 @pytest.mark.parametrize("rim, message", [
     (np.ones(5), "rim: expected 4 values, one per point, got shape (5,)"),
     (np.zeros((4, 1)), "rim: expected 4 values, one per point, got shape (4, 1)"),
