@@ -52,8 +52,8 @@ void resample_and_write(const PointSet<D>& input, std::size_t file_points, const
     std::cout << "support: Delta = " << options.resampling.radius_factor << " h, widened at "
               << result.widening.widened_points << " of " << input.size()
               << " points where the input is sparse (up to " << result.widening.widest << " Delta)\n";
-  if (result.first_pass_points > 0)
-    std::cout << "second pass: the first pass's " << result.first_pass_points
+  if (result.stats.first_pass_points > 0)
+    std::cout << "second pass: the first pass's " << result.stats.first_pass_points
               << " points resampled once more at h, since the input is sparser than h at "
               << result.widening.widened_points << " points (--one-pass: one)\n";
   if (!options.mesh.empty())

@@ -35,10 +35,10 @@ Resamples resample_three_times(const std::string& name, bool second_pass) {
   options.spacing = out.grid.spacing();
   Resamples r;
   r.h = options.spacing;
-  r.first_pass_points = out.first_pass_points;
+  r.first_pass_points = out.stats.first_pass_points;
   r.first = out.points.positions;
   out = resample_point_set<3>(std::move(out.points), options);
-  CHECK(out.first_pass_points == 0);  // an output read back at its h is not sparse
+  CHECK(out.stats.first_pass_points == 0);  // an output read back at its h is not sparse
   r.second = out.points.positions;
   out = resample_point_set<3>(std::move(out.points), options);
   r.third = out.points.positions;

@@ -189,8 +189,8 @@ ResampledPointSet<D> resample_point_set(PointSet<D> points, const PointSetResamp
     }
   }
   const StepStats stats = surface.resample_start(options.second_pass_where_sparse);
-  ResampledPointSet<D> out{surface.points(), grid, stats, widening, stats.first_pass_points,
-                           spacing_stats(surface.points(), h), Coverage{}, RimReport{}};
+  ResampledPointSet<D> out{surface.points(), grid, stats, widening, spacing_stats(surface.points(), h), Coverage{},
+                           RimReport{}};
   out.rim = rim_report(input_points, out.points, grid, parameters, options.threads);
   if (input.size() > static_cast<std::size_t>(kSpacingNeighbours)) {
     out.coverage = measure_coverage<D>(input, out.points.positions, h);

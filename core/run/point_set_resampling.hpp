@@ -96,7 +96,6 @@ struct ResampledPointSet {
   Grid<D> grid;
   StepStats stats;
   SupportWidening widening;
-  std::size_t first_pass_points = 0;  // the first pass's points when a second one was made, else 0
   SpacingStats spacing_h;  // nearest-neighbour spacing of the new points, in units of h
   Coverage coverage;       // of the input by the new points (core/geometry/coverage.hpp)
   RimReport rim;

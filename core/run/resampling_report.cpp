@@ -21,8 +21,9 @@ nlohmann::json resampling_report_json(const ResampledPointSet<D>& result, const 
                   {"widest", result.widening.widest}};
   j["file_points"] = run.file_points;  // a mesh's vertices
   j["points_in"] = run.points_in;      // a mesh's samples
-  j["passes"] = result.first_pass_points > 0 ? 2 : 1;
-  j["first_pass_points"] = result.first_pass_points > 0 ? result.first_pass_points : result.points.size();
+  const std::size_t first_pass = result.stats.first_pass_points;
+  j["passes"] = first_pass > 0 ? 2 : 1;
+  j["first_pass_points"] = first_pass > 0 ? first_pass : result.points.size();
   j["points_out"] = result.points.size();
   j["spacing_h"] = {{"min", result.spacing_h.min}, {"median", result.spacing_h.median}, {"max", result.spacing_h.max}};
   j["coverage"] = {{"reach", kCoverageReach},
