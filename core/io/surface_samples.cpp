@@ -4,8 +4,10 @@
 
 #include "core/io/mesh_inside.hpp"
 #include "core/io/mesh_sampling.hpp"
-#include "core/surface/normal_estimation.hpp"
 #include "core/io/point_set_io.hpp"
+#include "core/io/raw_point_file.hpp"
+#include "core/surface/normal_estimation.hpp"
+#include "core/surface/opposed_normals.hpp"
 
 namespace amls {
 
@@ -21,6 +23,25 @@ NormalEstimation estimate_in(PointSet<3>& points, double radius, ThreadPool& poo
   } else {
     return estimate_normals<3>(points, radius, pool);
   }
+}
+
+// Turns the normals that point against their neighbours'
+// (core/surface/opposed_normals.hpp); a warning counts them.
+template <int D>
+void turn_opposed(const std::string& path, PointSet<3>& points, double radius, ThreadPool& pool,
+                  std::vector<std::string>& warnings) {
+  PointSet<D> set = from_3d<D>(points);
+  const OpposedNormals opposed = turn_opposed_normals<D>(set.positions, set.normals, radius, pool);
+  if (opposed.turned.empty()) return;
+  for (const std::size_t i : opposed.turned) points.normals[i] = -points.normals[i];
+  std::string where = detail::shortest(points.positions[opposed.turned.front()].x());
+  for (int a = 1; a < D; ++a) {
+    where += ' ';
+    where += detail::shortest(points.positions[opposed.turned.front()][a]);
+  }
+  warnings.push_back(path + ": " + std::to_string(opposed.turned.size()) +
+                     " normals pointed against those of the points beside them (within " +
+                     detail::shortest(radius) + ") and were turned over (the first at " + where + ")");
 }
 
 }  // namespace
@@ -80,6 +101,12 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
   out.points = std::move(loaded.points);
   if (loaded.has_normals) {
     out.source = "point set of " + std::to_string(out.points.size()) + " points with normals";
+    if (options.normal_radius > 0.0) {
+      if (out.dimension == 2)
+        turn_opposed<2>(path, out.points, options.normal_radius, pool, out.warnings);
+      else
+        turn_opposed<3>(path, out.points, options.normal_radius, pool, out.warnings);
+    }
     return out;
   }
   NormalEstimation report;
