@@ -1,5 +1,6 @@
 #include "core/io/surface_samples.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/io/mesh_inside.hpp"
@@ -7,7 +8,7 @@
 #include "core/io/point_set_io.hpp"
 #include "core/io/raw_point_file.hpp"
 #include "core/surface/normal_estimation.hpp"
-#include "core/surface/opposed_normals.hpp"
+#include "core/surface/broken_normals.hpp"
 
 namespace amls {
 
@@ -25,23 +26,35 @@ NormalEstimation estimate_in(PointSet<3>& points, double radius, ThreadPool& poo
   }
 }
 
-// Turns the normals that point against their neighbours'
-// (core/surface/opposed_normals.hpp); a warning counts them.
+// Mends the normals that disagree with their neighbours'
+// (core/surface/broken_normals.hpp); a warning counts them.
 template <int D>
-void turn_opposed(const std::string& path, PointSet<3>& points, double radius, ThreadPool& pool,
-                  std::vector<std::string>& warnings) {
+void mend_broken(const std::string& path, PointSet<3>& points, double radius, ThreadPool& pool,
+                 std::vector<std::string>& warnings) {
   PointSet<D> set = from_3d<D>(points);
-  const OpposedNormals opposed = turn_opposed_normals<D>(set.positions, set.normals, radius, pool);
-  if (opposed.turned.empty()) return;
-  for (const std::size_t i : opposed.turned) points.normals[i] = -points.normals[i];
-  std::string where = detail::shortest(points.positions[opposed.turned.front()].x());
+  const BrokenNormals broken = mend_broken_normals<D>(set.positions, set.normals, radius, pool);
+  if (broken.turned.empty() && broken.replaced.empty()) return;
+  for (std::size_t i = 0; i < set.size(); ++i)
+    for (int a = 0; a < D; ++a) points.normals[i][a] = set.normals[i][a];
+  const std::size_t first = std::min(broken.turned.empty() ? set.size() : broken.turned.front(),
+                                     broken.replaced.empty() ? set.size() : broken.replaced.front());
+  std::string where = detail::shortest(points.positions[first].x());
   for (int a = 1; a < D; ++a) {
     where += ' ';
-    where += detail::shortest(points.positions[opposed.turned.front()][a]);
+    where += detail::shortest(points.positions[first][a]);
   }
-  warnings.push_back(path + ": " + std::to_string(opposed.turned.size()) +
-                     " normals pointed against those of the points beside them (within " +
-                     detail::shortest(radius) + ") and were turned over (the first at " + where + ")");
+  const std::string turned = std::to_string(broken.turned.size()) + " normals pointed against those of the points "
+                             "beside them and were turned over";
+  const std::string replaced = std::to_string(broken.replaced.size()) + " normals lay more than " +
+                               std::to_string(static_cast<int>(BrokenNormals::kBrokenDegrees)) + " degrees off " +
+                               (broken.turned.empty() ? "those of the points beside them" : "theirs") +
+                               " and were replaced by their mean direction";
+  std::string warning = path + ": ";
+  if (!broken.turned.empty()) warning += turned;
+  if (!broken.turned.empty() && !broken.replaced.empty()) warning += ", and ";
+  if (!broken.replaced.empty()) warning += replaced;
+  warning += " (within " + detail::shortest(radius) + "; the first at " + where + ")";
+  warnings.push_back(warning);
 }
 
 }  // namespace
@@ -103,9 +116,9 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
     out.source = "point set of " + std::to_string(out.points.size()) + " points with normals";
     if (options.normal_radius > 0.0) {
       if (out.dimension == 2)
-        turn_opposed<2>(path, out.points, options.normal_radius, pool, out.warnings);
+        mend_broken<2>(path, out.points, options.normal_radius, pool, out.warnings);
       else
-        turn_opposed<3>(path, out.points, options.normal_radius, pool, out.warnings);
+        mend_broken<3>(path, out.points, options.normal_radius, pool, out.warnings);
     }
     return out;
   }

@@ -1,8 +1,8 @@
 #pragma once
 // An input shape from a file, as oriented samples: a point set with normals
 // (PLY, OFF, text columns; core/io/point_set_io.hpp) as it is, but for the
-// normals that point against their neighbours', which are turned over
-// (core/surface/opposed_normals.hpp); a point set without normals with
+// normals that disagree with their neighbours', which are mended
+// (core/surface/broken_normals.hpp); a point set without normals with
 // normals estimated (core/surface/normal_estimation.hpp);
 // a triangle mesh (OBJ, or PLY or OFF with faces) sampled at about the given
 // spacing with face normals (core/io/mesh_sampling.hpp). `amls resample` and scenes read shapes through this.
@@ -20,7 +20,7 @@ namespace amls {
 struct SurfaceSampleOptions {
   double spacing = 0.0;        // meshes: sample spacing (> 0)
   // Point sets: without normals, the fit radius (> 0), e.g. Delta; with
-  // normals, the reach of the opposed-normal test (0 skips it).
+  // normals, the reach of the broken-normal test (0 skips it).
   double normal_radius = 0.0;
   int dimension = 0;           // point sets: 0 decides from the file, 2 or 3 forces it
   int threads = 1;             // the overloads without a pool
