@@ -97,7 +97,8 @@ void add_resample_command(CLI::App& app) {
       "resample",
       "resample a surface on a grid (unit square/cube, or the input's padded bounding box when it lies "
       "outside) and write the new points: once, or twice where the input is sparser than h (--one-pass). "
-      "Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
+      "Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D; broken normals, against or "
+      "across those of the points beside them within Delta, are mended with a warning), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
       "mesh (.obj, .ply or .off with faces; sampled at h with face normals).\n"
       "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
       "output), else the step of the grid lines its points lie on (amls's output), else the median distance from a "
@@ -146,7 +147,8 @@ void add_resample_command(CLI::App& app) {
     // Check the output's extension before any work is done.
     const PointFileFormat format = format_from_extension(options->output);
     if (!options->mesh.empty()) mesh_format_from_extension(options->mesh);
-    // The road the editor takes too: read, choose h, sample (meshes at h, missing normals over Delta).
+    // The road the editor takes too: read, choose h, sample (meshes at h, missing normals over Delta,
+    // broken ones mended over Delta).
     ShapeOpening opening;
     opening.resampling = options->resampling;
     opening.dimension = options->dimension;

@@ -146,8 +146,8 @@ void bind_resample(py::module_& m) {
 
 `amls resample`: resamples a surface on a grid (the unit square/cube, or the input's padded
 bounding box when it lies outside) and returns the new points: once, or twice where the input is
-sparser than h (one_pass). Input: a point set with normals, one
-without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a file path
+sparser than h (one_pass). Input: a point set with normals (broken normals, against or across
+those of the points beside them within Delta, are mended with a warning), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a file path
 (str or os.PathLike) of any format the command line reads - a point set, or a triangle mesh (.obj,
 or .ply or .off with faces; sampled at h with face normals).
 
