@@ -32,8 +32,8 @@ struct Beside {
 };
 
 template <int D>
-Beside<D> beside_within(std::size_t i, const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
-                        const PointIndex<D>& index, double radius) {
+Beside<D> beside_of(std::size_t i, const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
+                    const PointIndex<D>& index, double radius) {
   static const double beside = std::sin(BrokenNormals::kBesideDegrees * std::numbers::pi / 180.0);
   static const double against = -cos_degrees(BrokenNormals::kBrokenDegrees);
   const Vec<D>& p = positions[i];
@@ -48,17 +48,6 @@ Beside<D> beside_within(std::size_t i, const std::vector<Vec<D>>& positions, con
     out.sum += normals[j];
   });
   return out;
-}
-
-// Within `radius`, or where too few lie beside the point there (a sparse
-// part of the input), within twice or four times it.
-template <int D>
-Beside<D> beside_of(std::size_t i, const std::vector<Vec<D>>& positions, const std::vector<Vec<D>>& normals,
-                    const PointIndex<D>& index, double radius) {
-  Beside<D> beside = beside_within<D>(i, positions, normals, index, radius);
-  for (double reach = 2.0 * radius; beside.count < BrokenNormals::kFewestBeside && reach <= 4.0 * radius; reach *= 2.0)
-    beside = beside_within<D>(i, positions, normals, index, reach);
-  return beside;
 }
 
 // What point i's normal needs; `mean` gets the direction to replace it by.

@@ -14,14 +14,12 @@
 //
 // The points beside a point are its neighbours within `radius` that lie
 // within kBesideDegrees of its tangent plane (the same plane whichever way its
-// normal points); where fewer than kFewestBeside lie there (a sparse part of
-// the input, which the loop's widened supports reach across), those within
-// twice `radius`, or four times. Where there are at least kFewestBeside of
-// them, the point's normal is broken when it points against (more than
-// 180 - kBrokenDegrees from) the normals of kOpposedShare of them or more,
-// and is turned over; or when their normals agree (their mean's length at
-// least kAgreeing) and it lies more than kBrokenDegrees from their mean
-// direction, and is replaced by that direction. The plane and the shares are what tell a broken normal from
+// normal points). Where there are at least kFewestBeside of them, the point's
+// normal is broken when it points against (more than 180 - kBrokenDegrees
+// from) the normals of kOpposedShare of them or more, and is turned over; or
+// when their normals agree (their mean's length at least kAgreeing) and it
+// lies more than kBrokenDegrees from their mean direction, and is replaced by
+// that direction. The plane and the shares are what tell a broken normal from
 // the other side of a thin part: a sheet's other side thicker than the
 // spacing lies off the tangent plane, and one thinner than the spacing lies
 // in it but is sampled about as densely as this side, so that the normals
