@@ -33,6 +33,7 @@ struct ResampleOptions {
   bool accept_loss = false;
   bool uniform_support = false;
   bool one_pass = false;
+  std::string normals = "given";
 };
 
 template <int D>
@@ -135,6 +136,13 @@ void add_resample_command(CLI::App& app) {
                 "again changes little (docs/design.md, \"A second pass where the input is sparse\")");
   cmd->add_flag("--accept-loss", options->accept_loss,
                 "exit 0 even when the output clearly misses part of the input (a warning is still printed)");
+  cmd->add_option("--normals", options->normals,
+                  "given: a point set's own normals, broken ones (against or across those of the points beside "
+                  "them) mended with a warning; estimated: the file's normals set aside, and normals estimated and "
+                  "oriented as for a set without, for a file whose normals are unoriented (a face's all pointing "
+                  "inward)")
+      ->check(CLI::IsMember({"given", "estimated"}))
+      ->capture_default_str();
   add_radius_factor_option(*cmd, options->resampling.radius_factor);
   add_rims_option(*cmd, options->resampling.keep_rims);
   add_variant_option(*cmd, options->variant);
@@ -152,6 +160,7 @@ void add_resample_command(CLI::App& app) {
     ShapeOpening opening;
     opening.resampling = options->resampling;
     opening.dimension = options->dimension;
+    opening.estimate_normals = options->normals == "estimated";
     ThreadPool pool(options->resampling.threads);
     OpenedShape shape = open_shape_file(options->input, opening, pool);
     std::cout << "h = " << shape.spacing.h << " (" << shape.spacing.reason << ")\n";

@@ -126,6 +126,31 @@ def main():
     code, out, err = run(amls, arc, "--dim", "2", "--out", os.path.join(work, "x.xyz"), "--rims", "maybe")
     if code == 0 or "--rims" not in out + err:
         fail(f"--rims maybe: expected a refusal naming the option, got {code}:\n{out}{err}")
+
+    # A circle whose normals point outward on one half and inward on the other (unoriented): with
+    # --normals estimated the file's normals are set aside, and the output is that of the bare points.
+    halves, bare = os.path.join(work, "halves.xyz"), os.path.join(work, "bare.xyz")
+    rows = [line.split() for line in circle(3.0, 3.0, 1.0, 400)]
+    with open(halves, "w") as f:
+        for x, y, _, nx, ny, _ in rows:
+            sign = 1.0 if float(x) >= 3.0 else -1.0
+            f.write(f"{x} {y} {sign * float(nx)!r} {sign * float(ny)!r}\n")
+    with open(bare, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y, *_ in rows))
+    outputs = {}
+    for name, source, extra in (("set_aside", halves, ["--normals", "estimated"]), ("bare", bare, [])):
+        outputs[name] = os.path.join(work, f"{name}_out.xyz")
+        code, out, err = run(amls, source, "--dim", "2", "--out", outputs[name], *extra)
+        if code != 0:
+            fail(f"{name}: expected exit 0, got {code}:\n{out}{err}")
+        if name == "set_aside" and "with normals, set aside" not in out:
+            fail(f"--normals estimated: expected the source line to say the normals were set aside:\n{out}")
+    with open(outputs["set_aside"]) as a, open(outputs["bare"]) as b:
+        if a.read() != b.read():
+            fail("--normals estimated: expected the output of the same points without normals")
+    code, out, err = run(amls, halves, "--dim", "2", "--out", os.path.join(work, "x.xyz"), "--normals", "flipped")
+    if code == 0 or "--normals" not in out + err:
+        fail(f"--normals flipped: expected a refusal naming the option, got {code}:\n{out}{err}")
     print("PASS")
 
 

@@ -68,6 +68,32 @@ TEST_CASE("opening a scan without normals: normals estimated and oriented outwar
   }
 }
 
+TEST_CASE("opening a scan whose normals are unoriented: estimate_normals sets them aside and estimates them") {
+  TempDir dir;
+  ThreadPool pool(2);
+  // Every normal along +z or -z by the point's x, as a scanner that gives no sign would: half of
+  // them point inward, in patches as wide as the shape, which no local mending turns back.
+  const PointSet<3> exact = sphere_part(8000, 0.3, true);
+  PointSet<3> unoriented = exact;
+  for (std::size_t i = 0; i < unoriented.size(); ++i)
+    if (unoriented.positions[i].x() < 0.0) unoriented.normals[i] = -unoriented.normals[i];
+  const std::string path = dir.file("unoriented.xyz");
+  write_point_set(path, unoriented, PointFileFormat::xyz);
+  ShapeOpening options;
+  const OpenedShape given = open_shape_file(path, options, pool);
+  CHECK(flipped(given.points, exact) > exact.size() / 4);
+  options.estimate_normals = true;
+  const OpenedShape estimated = open_shape_file(path, options, pool);
+  CHECK(flipped(estimated.points, exact) == 0);
+  CHECK(estimated.source.find("with normals, set aside; normals estimated") != std::string::npos);
+  // The same points and normals as the file without its normals gives.
+  write_bare(dir.file("bare.xyz"), unoriented);
+  const OpenedShape bare = open_shape_file(dir.file("bare.xyz"), options, pool);
+  CHECK(estimated.points.positions == bare.points.positions);
+  CHECK(estimated.points.normals == bare.points.normals);
+  CHECK(estimated.spacing.h == bare.spacing.h);
+}
+
 TEST_CASE("opening a file: a given spacing wins, a recorded one comes next, and the cost is checked") {
   TempDir dir;
   ThreadPool pool(1);

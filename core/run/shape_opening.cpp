@@ -128,6 +128,11 @@ OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPo
   step("choosing h", 1);
   out.spacing =
       out.dimension == 2 ? spacing_for<2>(input, options.resampling) : spacing_for<3>(input, options.resampling);
+  const bool set_aside = options.estimate_normals && !input.is_mesh && input.point_set.has_normals;
+  if (set_aside) {
+    input.point_set.has_normals = false;
+    for (Vec<3>& normal : input.point_set.points.normals) normal.setZero();
+  }
   const bool estimating = !input.is_mesh && !input.point_set.has_normals;
   step(input.is_mesh ? "sampling the mesh" : estimating ? "estimating normals" : "checking the normals", 2);
   SurfaceSampleOptions sampling;
@@ -137,6 +142,9 @@ OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPo
   SurfaceSamples samples = surface_samples(std::move(input), sampling, pool);
   out.points = std::move(samples.points);
   out.source = std::move(samples.source);
+  if (set_aside)
+    out.source = "point set of " + std::to_string(out.points.size()) +
+                 " points with normals, set aside; normals estimated (Pratt fit, oriented over a neighbour graph)";
   out.warnings = std::move(samples.warnings);
   out.closed_mesh = std::move(samples.closed_mesh);
   return out;

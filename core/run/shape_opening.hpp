@@ -13,9 +13,11 @@
 //      (core/geometry/surface_scatter.hpp); a resampling at h is then checked
 //      against the cost limits (check_resampling_cost);
 //   3. samples: a mesh sampled at h with face normals; a point set without
-//      normals gets them estimated over Delta = radius_factor h and oriented
-//      (core/surface/normal_estimation.hpp) - the editor opens what the
-//      command line opens.
+//      normals (or with `estimate_normals`) gets them estimated over
+//      Delta = radius_factor h and oriented (core/surface/normal_estimation.hpp),
+//      one with normals has its broken ones mended over Delta
+//      (core/surface/broken_normals.hpp) - the editor opens what the command
+//      line opens.
 // Every warning names the file.
 #include <cstddef>
 #include <functional>
@@ -34,6 +36,10 @@ struct ShapeOpening {
   // spacing or grid (else the rule), radius_factor (the normals' fit radius), the cost limits.
   PointSetResampling resampling;
   int dimension = 0;  // 0: from the file; 2 or 3 forces it
+  // A point set's normals estimated and oriented as for one without, the
+  // file's set aside: for a file whose normals are unoriented (a face's all
+  // pointing inward), which mending one at a time cannot put right.
+  bool estimate_normals = false;
   // Called before each step, with its name, index and the count (for a progress display).
   std::function<void(const char* step, int index, int count)> step;
 };
