@@ -184,4 +184,15 @@ TEST_CASE("broken normals: a point set opened with normals has its broken ones t
     CHECK(as_given.points.normals == input.point_set.points.normals);
     CHECK(as_given.warnings.empty());
   }
+  SUBCASE("a spread too wide for the neighbour index is an error naming the file") {
+    SurfaceInput far;
+    far.path = "far.xyz";
+    for (const double x : {0.0, 1.0, 2.0, 1e15})
+      far.point_set.points.add(Vec<3>(x, 0.0, 0.0), Vec<3>(0.0, 0.0, 1.0));
+    far.point_set.has_normals = true;
+    options.normal_radius = 1e-3;
+    CHECK_THROWS_WITH_AS(surface_samples(far, options),
+                         doctest::Contains("far.xyz: cannot check the normals against their neighbours'"),
+                         std::runtime_error);
+  }
 }

@@ -32,7 +32,12 @@ template <int D>
 void mend_broken(const std::string& path, PointSet<3>& points, double radius, ThreadPool& pool,
                  std::vector<std::string>& warnings) {
   PointSet<D> set = from_3d<D>(points);
-  const BrokenNormals broken = mend_broken_normals<D>(set.positions, set.normals, radius, pool);
+  BrokenNormals broken;
+  try {
+    broken = mend_broken_normals<D>(set.positions, set.normals, radius, pool);
+  } catch (const std::invalid_argument& e) {  // e.g. a spread too wide for the neighbour index's cells
+    throw std::runtime_error(path + ": cannot check the normals against their neighbours': " + e.what());
+  }
   if (broken.turned.empty() && broken.replaced.empty()) return;
   for (std::size_t i = 0; i < set.size(); ++i)
     for (int a = 0; a < D; ++a) points.normals[i][a] = set.normals[i][a];

@@ -59,7 +59,7 @@ SurfaceInput read_surface_input(const std::string& path, int dimension);
 // The samples of a shape read by read_surface_input(), which it takes over
 // (options.dimension is the input's). Throws std::runtime_error naming the
 // file for a mesh with no triangle of positive area, or normals that cannot
-// be estimated. Normals are estimated on `pool` (its cancel check stops them
+// be estimated or checked (a spread too wide for the neighbour index). Normals are estimated on `pool` (its cancel check stops them
 // with Cancelled); the overload without one makes a pool of options.threads.
 SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options, ThreadPool& pool);
 SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& options);
