@@ -14,16 +14,22 @@ namespace amls {
 
 namespace {
 
-template <int D>
-NormalEstimation estimate_in(PointSet<3>& points, double radius, ThreadPool& pool) {
+// Calls fn on `points` held as a set of dimension D: a 2D set as a copy, written back.
+template <int D, typename Fn>
+auto in_dimension(PointSet<3>& points, Fn&& fn) {
   if constexpr (D == 2) {
     PointSet<2> flat = to_2d(points);
-    NormalEstimation report = estimate_normals<2>(flat, radius, pool);
+    auto result = fn(flat);
     points = to_3d(flat);
-    return report;
+    return result;
   } else {
-    return estimate_normals<3>(points, radius, pool);
+    return fn(points);
   }
+}
+
+template <int D>
+NormalEstimation estimate_in(PointSet<3>& points, double radius, ThreadPool& pool) {
+  return in_dimension<D>(points, [&](PointSet<D>& set) { return estimate_normals<D>(set, radius, pool); });
 }
 
 // Mends the normals that disagree with their neighbours'
@@ -31,18 +37,17 @@ NormalEstimation estimate_in(PointSet<3>& points, double radius, ThreadPool& poo
 template <int D>
 void mend_broken(const std::string& path, PointSet<3>& points, double radius, ThreadPool& pool,
                  std::vector<std::string>& warnings) {
-  PointSet<D> set = from_3d<D>(points);
   BrokenNormals broken;
   try {
-    broken = mend_broken_normals<D>(set.positions, set.normals, radius, pool);
+    broken = in_dimension<D>(points, [&](PointSet<D>& set) {
+      return mend_broken_normals<D>(set.positions, set.normals, radius, pool);
+    });
   } catch (const std::invalid_argument& e) {  // e.g. a spread too wide for the neighbour index's cells
     throw std::runtime_error(path + ": cannot check the normals against their neighbours': " + e.what());
   }
   if (broken.turned.empty() && broken.replaced.empty()) return;
-  for (std::size_t i = 0; i < set.size(); ++i)
-    for (int a = 0; a < D; ++a) points.normals[i][a] = set.normals[i][a];
-  const std::size_t first = std::min(broken.turned.empty() ? set.size() : broken.turned.front(),
-                                     broken.replaced.empty() ? set.size() : broken.replaced.front());
+  const std::size_t first = std::min(broken.turned.empty() ? points.size() : broken.turned.front(),
+                                     broken.replaced.empty() ? points.size() : broken.replaced.front());
   std::string where = detail::shortest(points.positions[first].x());
   for (int a = 1; a < D; ++a) {
     where += ' ';
