@@ -61,6 +61,23 @@ TEST_CASE("collapse_slivers: a cluster beside a grid vertex becomes one vertex, 
   CHECK((mesh.vertices[3] - apex).norm() < 0.005 * 0.6);
 }
 
+TEST_CASE("collapse_slivers: a cluster reaching 0.07 h from its grid vertex is merged too") {
+  // On a flat face at an angle to the grid (CGAL's 3torus.off), a sliver's far corner lay 0.071 h
+  // from the grid vertex: the needle left beside it lay nearly in the plane of a triangle 0.04 h
+  // away, and Open3D took the two for crossing.
+  SurfaceMesh<3> mesh;
+  const Vec<3> apex(0.3, 0.3, 0.3);
+  add_cut_tetrahedron(mesh, {0.0, 0.0, 0.0}, {0.6, 0.0, 0.05}, {0.0, 0.6, 0.05}, apex, 0.0135);
+  for (std::size_t k = 3; k < 6; ++k) {
+    const double away = (mesh.vertices[k] - apex).norm() / kH;
+    REQUIRE(away > 0.06);
+    REQUIRE(away < 0.075);
+  }
+  CHECK(collapse_slivers(mesh, kGrid) == 2);
+  CHECK(mesh_topology(mesh).closed());
+  CHECK(euler_characteristic(mesh) == 2);
+}
+
 TEST_CASE("collapse_slivers: vertices farther than the reach, or nowhere near a grid vertex, stay") {
   SurfaceMesh<3> mesh;
   add_cut_tetrahedron(mesh, {0.0, 0.0, 0.0}, {0.6, 0.0, 0.05}, {0.0, 0.6, 0.05}, {0.3, 0.3, 0.3}, 0.2);
