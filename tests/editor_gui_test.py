@@ -728,19 +728,16 @@ def test_frames_during_heavy_step(binary, folder):
     editor.quit()
 
 
-def test_open_without_normals(binary, folder):
-    """A scan without normals opens as `amls resample` opens it: normals estimated and outward."""
-    scan, out = os.path.join(folder, "scan.xyz"), os.path.join(folder, "scan-out.ply")
-    count = 1500
-    with open(scan, "w") as f:
-        for i in range(count):  # a Fibonacci sphere of radius 1, positions only
-            z = 1 - 2 * (i + 0.5) / count
-            r, angle = math.sqrt(1 - z * z), i * math.pi * (3 - math.sqrt(5))
-            f.write("%.17g %.17g %.17g\n" % (r * math.cos(angle), r * math.sin(angle), z))
-    editor = Editor(binary, folder, "editor-scan", [scan, "--export", out], size="640x480")
-    editor.wait_line(r"snapshot .* load=1 dimension=3 points=%d" % count, what="the scan without normals to load")
-    check(editor.count(r"message level=info .*normals estimated") == 1, "the editor says it estimated the normals")
-    check(editor.count(r"message level=error") == 0, "opening the scan gave no error")
+def fibonacci_sphere(count):
+    """A Fibonacci sphere of radius 1: count points with their outward normals."""
+    for i in range(count):
+        z = 1 - 2 * (i + 0.5) / count
+        r, angle = math.sqrt(1 - z * z), i * math.pi * (3 - math.sqrt(5))
+        yield r * math.cos(angle), r * math.sin(angle), z
+
+
+def export_outward(editor, out):
+    """Ctrl+S, then how many of the exported points' normals point outward, and how many were written."""
     editor.wait_idle()
     editor.key("ctrl+s")
     editor.wait_line("message level=info Exported", what="the export")
@@ -751,8 +748,37 @@ def test_open_without_normals(binary, folder):
     check("comment amls spacing " in header, "the export records its h")
     written = int(re.search(r"element vertex (\d+)", header).group(1))
     records = [struct.unpack_from("<6d", data, end + i * 48) for i in range(written)]
-    outward = sum(1 for x, y, z, nx, ny, nz in records if x * nx + y * ny + z * nz > 0.9)
+    return sum(1 for x, y, z, nx, ny, nz in records if x * nx + y * ny + z * nz > 0.9), written
+
+
+def test_open_without_normals(binary, folder):
+    """A scan without normals opens as `amls resample` opens it: normals estimated and outward; and
+    one whose normals all point inward has them set aside and estimated under --normals estimated."""
+    scan, out = os.path.join(folder, "scan.xyz"), os.path.join(folder, "scan-out.ply")
+    count = 1500
+    with open(scan, "w") as f:
+        for x, y, z in fibonacci_sphere(count):  # positions only
+            f.write("%.17g %.17g %.17g\n" % (x, y, z))
+    editor = Editor(binary, folder, "editor-scan", [scan, "--export", out], size="640x480")
+    editor.wait_line(r"snapshot .* load=1 dimension=3 points=%d" % count, what="the scan without normals to load")
+    check(editor.count(r"message level=info .*normals estimated") == 1, "the editor says it estimated the normals")
+    check(editor.count(r"message level=error") == 0, "opening the scan gave no error")
+    outward, written = export_outward(editor, out)
     check(written > 0 and outward == written, "every estimated normal points outward (%d of %d)" % (outward, written))
+    editor.quit()
+
+    inward, out = os.path.join(folder, "inward.xyz"), os.path.join(folder, "inward-out.ply")
+    with open(inward, "w") as f:
+        for x, y, z in fibonacci_sphere(count):
+            f.write("%.17g %.17g %.17g %.17g %.17g %.17g\n" % (x, y, z, -x, -y, -z))
+    editor = Editor(binary, folder, "editor-inward", [inward, "--normals", "estimated", "--export", out],
+                    size="640x480")
+    editor.wait_line(r"snapshot .* load=1 dimension=3 points=%d" % count, what="the inward scan to load")
+    check(editor.count(r"message level=info .*with normals, set aside; normals estimated") == 1,
+          "the editor says it set the file's normals aside")
+    outward, written = export_outward(editor, out)
+    check(written > 0 and outward == written,
+          "every normal points outward though the file's point inward (%d of %d)" % (outward, written))
     editor.quit()
 
 

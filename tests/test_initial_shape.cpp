@@ -1,10 +1,12 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "app/editor/edit_session.hpp"
 #include "app/editor/initial_shape.hpp"
 #include "app/editor/scene_start.hpp"
+#include "app/editor/session_recording.hpp"
 #include "core/geometry/shapes.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/run/point_set_resampling.hpp"
@@ -142,6 +144,48 @@ TEST_CASE("a file the editor exported opens again at its h, which the file recor
   const std::string path = dir.file("exported.ply");
   write_point_set(path, sample_sphere(Vec<3>::Zero(), 1.0, 3000), PointFileFormat::ply_binary_little_endian, 0.0432);
   CHECK(load_initial_shape(path, 1).settings.spacing == 0.0432);
+}
+
+TEST_CASE("a point-set file opened with its normals set aside: estimated as without them, and a saved session replays it") {
+  amls::test::TempDir dir;
+  // Every normal inward: consistent, so the file's own are kept inward unless set aside.
+  PointSet<3> inward = sample_sphere(Vec<3>::Zero(), 1.0, 3000);
+  for (Vec<3>& normal : inward.normals) normal = -normal;
+  const std::string path = dir.file("inward.ply");
+  write_point_set(path, inward, PointFileFormat::ply_binary_little_endian);
+  auto outward = [](const PointSet<3>& points) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) count += points.normals[i].dot(points.positions[i]) > 0.9 ? 1 : 0;
+    return count;
+  };
+  ThreadPool pool(2);
+  const InitialShape given = load_initial_shape(path, pool);
+  CHECK(outward(given.points) == 0);
+  CHECK_FALSE(std::get<SceneShape<3>>(given.source).estimate_normals);
+  const InitialShape estimated = load_initial_shape(path, pool, {}, true);
+  REQUIRE(estimated.points.size() == inward.size());
+  CHECK(outward(estimated.points) == inward.size());
+  CHECK(estimated.opened.find("with normals, set aside; normals estimated") != std::string::npos);
+  REQUIRE(std::holds_alternative<SceneShape<3>>(estimated.source));
+  CHECK(std::get<SceneShape<3>>(estimated.source).estimate_normals);
+
+  // h has the 3 digits Save Scene writes (and the normals were estimated with that h) ...
+  const double h = estimated.settings.spacing;
+  const double scale = std::pow(10.0, 2.0 - std::floor(std::log10(h)));
+  CHECK(std::abs(h * scale - std::round(h * scale)) < 1e-6);
+  // ... so that Save Scene after one step names the choice, and `amls deform` starts from the same points.
+  SessionRecording<3> recording(std::get<SceneShape<3>>(estimated.source), estimated.settings);
+  recording.deformed({Vec<3>(0, 0, 1)}, {Vec<3>(0, 0, 1.1)}, estimated.settings);
+  recording.resampled(estimated.settings);
+  const std::string scene_path = dir.file("session.json");
+  write_scene(scene_path, recorded_scene(recording, scene_path, "session"));
+  const Scene<3> replayed = std::get<Scene<3>>(read_scene(scene_path));
+  CHECK(replayed.shape.estimate_normals);
+  const SceneShapeSamples<3> samples = sample_scene_shape(replayed, 0.0, 2);
+  CHECK(samples.points.positions == estimated.points.positions);
+  CHECK(samples.points.normals == estimated.points.normals);
+  // And the editor opens the saved scene with them estimated, whatever its own choice for shape files.
+  CHECK(outward(load_initial_shape(scene_path, pool).points) == inward.size());
 }
 
 TEST_CASE("a point-set file too small, empty or missing is refused with its name") {

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/geometry/shapes.hpp"
+#include "core/io/point_set_io.hpp"
 #include "core/run/scene.hpp"
 #include "core/run/scene_run.hpp"
 #include "core/util/file_error.hpp"
@@ -134,6 +136,50 @@ TEST_CASE("scene: bad scenes are rejected with a message naming the file and wha
   std::filesystem::create_directory(dir.file("folder.json"));
   CHECK_THROWS_WITH_AS(read_scene(dir.file("folder.json")), doctest::Contains("folder.json: is a directory"),
                        FileError);
+}
+
+TEST_CASE("scene: a file shape's own normals set aside and estimated with \"normals\": \"estimated\"") {
+  TempDir dir;
+  // A sphere whose normals all point inward: consistent with each other, so no mending turns them,
+  // but wrong, as a scanner's that gives no sign can be.
+  PointSet<3> inward = sample_sphere(Vec<3>::Zero(), 1.0, 2000);
+  for (Vec<3>& normal : inward.normals) normal = -normal;
+  write_point_set(dir.file("inward.xyz"), inward, PointFileFormat::xyz);
+  const std::string stages =
+      R"(, "stages": [{"handles": [[0, 0, 1]], "targets": [{"steps": 1, "handles": [[0, 0, 1.1]]}]}]})";
+  auto scene_with = [&](const std::string& normals) {
+    write_text(dir.file("s.json"), R"({"dimension": 3, "grid": {"spacing": 0.1}, "shape": {"type": "file", )"
+                                   R"("path": "inward.xyz")" + normals + "}" + stages);
+    return std::get<Scene<3>>(read_scene(dir.file("s.json")));
+  };
+  auto outward = [](const PointSet<3>& points) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) count += points.normals[i].dot(points.positions[i]) > 0.9 ? 1 : 0;
+    return count;
+  };
+  for (const std::string given : {"", R"(, "normals": "given")"}) {
+    const Scene<3> scene = scene_with(given);
+    CHECK_FALSE(scene.shape.estimate_normals);
+    CHECK(outward(sample_scene_shape(scene, 0.0).points) == 0);
+    CHECK_FALSE(to_json(scene)["shape"].contains("normals"));  // scenes written before the key read the same
+  }
+  const Scene<3> estimated = scene_with(R"(, "normals": "estimated")");
+  CHECK(estimated.shape.estimate_normals);
+  const SceneShapeSamples<3> samples = sample_scene_shape(estimated, 0.0);
+  REQUIRE(samples.points.size() == inward.size());
+  CHECK(outward(samples.points) == inward.size());
+  CHECK(samples.source.find("with normals, set aside; normals estimated") != std::string::npos);
+  // Written back, the choice is kept.
+  CHECK(to_json(estimated)["shape"]["normals"] == "estimated");
+  write_scene(dir.file("again.json"), estimated);
+  CHECK(std::get<Scene<3>>(read_scene(dir.file("again.json"))).shape.estimate_normals);
+
+  CHECK(error_of(R"({"dimension": 3, "grid": {"spacing": 0.1}, "shape": {"type": "file", "path": "inward.xyz", )"
+                 R"("normals": "guessed"})" + stages, dir)
+            .find(R"(shape.normals: expected "given" or "estimated", got "guessed")") != std::string::npos);
+  CHECK(error_of(R"({"dimension": 3, "grid": {"spacing": 0.1}, "shape": {"type": "sphere", )"
+                 R"("normals": "estimated"})" + stages, dir)
+            .find("shape.normals: unknown key") != std::string::npos);
 }
 
 TEST_CASE("scene: a shape file with no points is named when the shape is sampled") {

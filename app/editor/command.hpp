@@ -14,6 +14,7 @@ namespace command {
 
 struct LoadFile {  // a point-set file or a scene
   std::string path;
+  bool estimate_normals = false;  // a point set's own normals set aside and estimated (load_shape_file)
 };
 struct LoadShape {  // a built-in shape (circle in 2D, sphere in 3D)
   int dimension = 2;

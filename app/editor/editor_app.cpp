@@ -53,6 +53,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   ui_.export_path = options.export_path;
   ui_.mesh_path = std::filesystem::path(options.export_path).replace_extension(".obj").string();
   ui_.scene_path = options.scene_path;
+  ui_.estimate_normals = options.estimate_normals;
   ui_.screenshot_path = options.screenshot_path;
   ui_.render.point_size_px *= window_.ui_scale();
   ui_.render.handle_size_px *= window_.ui_scale();
@@ -68,7 +69,7 @@ EditorApp::EditorApp(const EditorOptions& options)
     post(command::LoadShape{options.start_3d ? 3 : 2, 1.0, options.start_3d ? 10000u : 250u,
                             options.start_3d ? 0.04 : 0.024});
   else
-    post(command::LoadFile{options.input});
+    post(command::LoadFile{options.input, ui_.estimate_normals});
   const Viewport vp = window_.viewport();
   log_.line([&] {
     return "ready gl=\"" + window_.gl_description() + "\" scale=" + std::to_string(window_.ui_scale()) +
@@ -122,7 +123,8 @@ void EditorApp::frame() {
     log_region_window(draw_region_window(regions_, snapshot.settings.spacing));
     draw_region_overlay(regions_, view_.camera(), window_.viewport(), window_.pixels_per_unit());
   }
-  if (std::optional<std::string> chosen = browser_.draw(ui_.show_browser)) post(command::LoadFile{*chosen});
+  if (std::optional<std::string> chosen = browser_.draw(ui_.show_browser, ui_.estimate_normals))
+    post(command::LoadFile{*chosen, ui_.estimate_normals});
 
   const Viewport viewport = window_.viewport();
   renderer_->set_handles(view_.drawn_handles());
@@ -233,7 +235,7 @@ void EditorApp::process_input() {
   view_.set_middle_orbits(regions_.brush_mode || regions_.lasso_mode);
   for (const std::string& path : window_.take_dropped_paths()) {
     log_.line([&] { return "drop " + path; });
-    post(command::LoadFile{path});
+    post(command::LoadFile{path, ui_.estimate_normals});
   }
   for (const InputEvent& event : window_.take_events()) {
     if (event.type == InputEvent::Type::key) {

@@ -23,6 +23,13 @@ std::optional<int> parse_editor_options(int argc, char** argv, EditorOptions& op
   app.set_version_flag("--version", "amls-editor 0.1.0");
   std::string size;
   app.add_option("input", options.input, "point set (.ply, .off, .xyz, .pwn, .csv, .txt; normals estimated where missing), mesh (.obj, .ply, .off) or scene (.json) to open");
+  std::string normals = "given";
+  app.add_option("--normals", normals,
+                 "given: a point set's own normals, broken ones mended; estimated: set aside and estimated as for "
+                 "a set without, for a scan whose normals are unoriented (also the file browser's 'Estimate "
+                 "normals'; Save Scene records it as the shape's \"normals\": \"estimated\")")
+      ->check(CLI::IsMember({"given", "estimated"}))
+      ->capture_default_str();
   app.add_flag("--3d", options.start_3d, "start with the built-in sphere instead of the circle (no input)");
   app.add_option("--export", options.export_path, "where Ctrl+S writes the point set (.ply with normals, or .xyz)");
   app.add_option("--scene-out", options.scene_path, "where Save Scene (Ctrl+Shift+S) writes the session");
@@ -48,6 +55,7 @@ std::optional<int> parse_editor_options(int argc, char** argv, EditorOptions& op
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  options.estimate_normals = normals == "estimated";
   if (options.debug_log.empty())
     if (const char* env = std::getenv("AMLS_EDITOR_DEBUG_LOG")) options.debug_log = env;
   const std::string stem = options.input.empty() ? (options.start_3d ? "sphere" : "circle")

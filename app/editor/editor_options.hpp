@@ -7,6 +7,7 @@ namespace amls::editor {
 
 struct EditorOptions {
   std::string input;            // a point-set file or a scene; empty: the built-in shape
+  bool estimate_normals = false;  // --normals estimated: a point set's own normals set aside and estimated
   bool start_3d = false;        // --3d: the built-in sphere instead of the circle
   std::string export_path;      // Ctrl+S writes here (default: <input>-edited.ply)
   std::string scene_path;       // Save Scene writes here (default: <input>-session.json)

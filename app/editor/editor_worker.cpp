@@ -240,12 +240,13 @@ WorkControl EditorWorker::control_for(std::uint64_t epoch) {
                      [this](const char* name, int index, int count) { set_phase(name, index, count); }};
 }
 
-void EditorWorker::load_file(const std::string& path, const WorkControl& control) {
+void EditorWorker::load_file(const command::LoadFile& load, const WorkControl& control) {
+  const std::string& path = load.path;
   try {
     // On a pool of its own (a session owns its pool), stopped as the command's other work is.
     ThreadPool pool(options_.threads);
     CancelScope stop(pool, control.cancelled);
-    start(load_initial_shape(path, pool, control.phase));
+    start(load_initial_shape(path, pool, control.phase, load.estimate_normals));
   } catch (const Cancelled&) {
     message(Message::Level::info, "Opening " + path + " was stopped" +
                                       (std::holds_alternative<std::monostate>(session_) ? "" : " (the current surface is kept)"));
@@ -307,7 +308,7 @@ void EditorWorker::execute(const QueuedCommand& queued) {
   using namespace command;
   std::visit(
       Overloaded{
-          [&](const LoadFile& c) { load_file(c.path, control); },
+          [&](const LoadFile& c) { load_file(c, control); },
           [&](const LoadShape& c) {
             start(c.dimension == 3 ? make_sphere(c.radius, c.points, c.spacing)
                                    : make_circle(c.radius, c.points, c.spacing));

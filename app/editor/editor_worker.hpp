@@ -67,7 +67,7 @@ class EditorWorker {
   // Runs `edit(session)` on the session of either dimension, or says that nothing is loaded.
   template <typename Edit>
   void on_session(Edit&& edit);
-  void load_file(const std::string& path, const WorkControl& control);
+  void load_file(const command::LoadFile& load, const WorkControl& control);
   void export_points(const std::string& path);
   void export_mesh(const std::string& path);
   void save_scene(const std::string& path);

@@ -28,7 +28,7 @@ void FileBrowser::enter(const std::filesystem::path& folder) {
   selected_ = -1;
 }
 
-std::optional<std::string> FileBrowser::draw(bool& open) {
+std::optional<std::string> FileBrowser::draw(bool& open, bool& estimate_normals) {
   if (!open) return std::nullopt;
   std::optional<std::string> chosen;
   const ImGuiIO& io = ImGui::GetIO();
@@ -82,6 +82,10 @@ std::optional<std::string> FileBrowser::draw(bool& open) {
   if (ImGui::Button("Cancel")) open = false;
   ImGui::SameLine();
   ImGui::TextDisabled(".ply .off .obj .xyz .pwn .csv .txt (normals estimated where missing), .json scenes");
+  ImGui::Checkbox("Estimate normals", &estimate_normals);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A point set's own normals set aside and estimated as for one without: for a scan whose "
+                      "normals are unoriented (a face's all pointing inward). A scene's own 'normals' key decides for it.");
   ImGui::End();
   if (next_folder) enter(*next_folder);
   if (chosen) open = false;

@@ -13,8 +13,9 @@ class FileBrowser {
  public:
   explicit FileBrowser(std::filesystem::path folder);
 
-  // Draws the browser while `open`; returns a file the user chose (and closes).
-  std::optional<std::string> draw(bool& open);
+  // Draws the browser while `open`, with the choice of a point set's normals
+  // (its own, or set aside and estimated); returns a file the user chose (and closes).
+  std::optional<std::string> draw(bool& open, bool& estimate_normals);
 
  private:
   void enter(const std::filesystem::path& folder);

@@ -46,18 +46,13 @@ InitialShape builtin(double radius, std::size_t points, double spacing) {
 
 // A point-set file opened on its own, as a scene would name it.
 template <int D>
-SceneShape<D> file_shape(const std::string& path) {
+SceneShape<D> file_shape(const std::string& path, bool estimate_normals) {
   SceneShape<D> shape;
   shape.type = ShapeType::file;
   shape.file = path;
   shape.resolved_file = path;
+  shape.estimate_normals = estimate_normals;
   return shape;
-}
-
-// x rounded to `digits` significant digits.
-double round_significant(double x, int digits) {
-  const double scale = std::pow(10.0, digits - 1 - static_cast<int>(std::floor(std::log10(x))));
-  return std::round(x * scale) / scale;
 }
 
 // One resampling at the shape's h and with its supports, as `amls resample`
@@ -94,16 +89,21 @@ InitialShape default_shape(int dimension) {
   return dimension == 3 ? make_sphere(1.0, 10000, 0.04) : make_circle(1.0, 250, 0.024);
 }
 
-InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const LoadStep& step) {
+InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const LoadStep& step, bool estimate_normals) {
   // The road's steps, then the coverage.
   constexpr int kSteps = kShapeOpeningSteps + 1;
   ShapeOpening opening;
   opening.resampling.threads = pool.threads();
+  opening.estimate_normals = estimate_normals;
+  // The h the Surface panel shows and Save Scene writes, before the normals and a mesh's samples are made
+  // with it, so that a saved session replays from the same samples.
+  opening.spacing_digits = 3;
   if (step) opening.step = [&](const char* name, int index, int) { step(name, index, kSteps); };
   OpenedShape opened = open_shape_file(path, opening, pool);
   InitialShape shape;
-  shape.source = opened.dimension == 2 ? ShapeSource(file_shape<2>(path)) : ShapeSource(file_shape<3>(path));
-  shape.settings.spacing = round_significant(opened.spacing.h, 3);
+  shape.source = opened.dimension == 2 ? ShapeSource(file_shape<2>(path, estimate_normals))
+                                       : ShapeSource(file_shape<3>(path, estimate_normals));
+  shape.settings.spacing = opened.spacing.h;
   shape.settings.radius_factor = opening.resampling.radius_factor;
   // Real data is often sparse in places: widen there, as `amls resample` does.
   shape.settings.widen_support = true;
@@ -126,12 +126,13 @@ InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const Lo
   return shape;
 }
 
-InitialShape load_initial_shape(const std::string& path, ThreadPool& pool, const LoadStep& step) {
+InitialShape load_initial_shape(const std::string& path, ThreadPool& pool, const LoadStep& step,
+                                bool estimate_normals) {
   if (lower_extension(path) == ".json") {
     if (step) step("reading the scene", 0, 1);
     return with_editor_policy(load_scene_start(path, pool.threads()));
   }
-  return with_editor_policy(load_shape_file(path, pool, step));
+  return with_editor_policy(load_shape_file(path, pool, step, estimate_normals));
 }
 
 InitialShape load_initial_shape(const std::string& path, int threads) {

@@ -30,13 +30,19 @@ using LoadStep = std::function<void(const char* step, int index, int count)>;
 // widened where the points are sparse (AmlsParameters::widen_support), and
 // the coverage of one resampling at h measured as `amls resample` measures
 // it, with the same supports. Work runs on `pool`, whose cancel check stops
-// it (Cancelled). Throws std::runtime_error naming the file for one that
-// cannot be read, has too few points, or whose normals cannot be estimated.
-InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const LoadStep& step = {});
+// it (Cancelled). With `estimate_normals` a point set's own normals are set
+// aside and estimated (`amls resample --normals estimated`), and the session's
+// scene says so, so that Save Scene replays it. Throws std::runtime_error
+// naming the file for one that cannot be read, has too few points, or whose
+// normals cannot be estimated.
+InitialShape load_shape_file(const std::string& path, ThreadPool& pool, const LoadStep& step = {},
+                             bool estimate_normals = false);
 
 // A scene (.json) or a shape file, by the extension; the pool samples a
-// scene's shape file (normal estimation, mesh sampling) too.
-InitialShape load_initial_shape(const std::string& path, ThreadPool& pool, const LoadStep& step = {});
+// scene's shape file (normal estimation, mesh sampling) too. A scene's own
+// `normals` key decides for it: `estimate_normals` is for a shape file.
+InitialShape load_initial_shape(const std::string& path, ThreadPool& pool, const LoadStep& step = {},
+                                bool estimate_normals = false);
 InitialShape load_initial_shape(const std::string& path, int threads);
 
 // From this many points on, a shape the editor opens (built-in, file or

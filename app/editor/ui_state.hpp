@@ -33,6 +33,9 @@ struct UiState {
 
   bool show_help = false;
   bool show_browser = false;
+  // Point-set files opened from the browser or dropped on the window: their own
+  // normals set aside and estimated (`--normals estimated`).
+  bool estimate_normals = false;
 
   Message status{Message::Level::info, "Shift+click on the surface adds a handle; drag it to deform. H: help"};
   std::deque<Message> history;  // newest first

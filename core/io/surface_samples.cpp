@@ -122,7 +122,8 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
   out.warnings = std::move(loaded.warnings);
   out.dimension = loaded.dimension;
   out.points = std::move(loaded.points);
-  if (loaded.has_normals) {
+  const bool set_aside = options.estimate_normals && loaded.has_normals;
+  if (loaded.has_normals && !set_aside) {
     out.source = "point set of " + std::to_string(out.points.size()) + " points with normals";
     if (options.normal_radius > 0.0) {
       if (out.dimension == 2)
@@ -132,6 +133,8 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
     }
     return out;
   }
+  if (set_aside)
+    for (Vec<3>& normal : out.points.normals) normal.setZero();
   NormalEstimation report;
   try {
     report = out.dimension == 2 ? estimate_in<2>(out.points, options.normal_radius, pool)
@@ -140,7 +143,8 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
     throw std::runtime_error(path + ": cannot estimate normals: " + e.what());
   }
   out.source = "point set of " + std::to_string(out.points.size()) +
-               " points without normals; normals estimated (Pratt fit, oriented over a neighbour graph)";
+               (set_aside ? " points with normals, set aside" : " points without normals") +
+               "; normals estimated (Pratt fit, oriented over a neighbour graph)";
   for (const std::string& warning : report.warnings) out.warnings.push_back(path + ": " + warning);
   return out;
 }

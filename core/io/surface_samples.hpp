@@ -3,7 +3,8 @@
 // (PLY, OFF, text columns; core/io/point_set_io.hpp) as it is, but for the
 // normals that disagree with their neighbours', which are mended
 // (core/surface/broken_normals.hpp); a point set without normals with
-// normals estimated (core/surface/normal_estimation.hpp);
+// normals estimated (core/surface/normal_estimation.hpp), as is one whose
+// normals the caller sets aside;
 // a triangle mesh (OBJ, or PLY or OFF with faces) sampled at about the given
 // spacing with face normals (core/io/mesh_sampling.hpp). `amls resample` and scenes read shapes through this.
 #include <optional>
@@ -22,6 +23,10 @@ struct SurfaceSampleOptions {
   // Point sets: without normals, the fit radius (> 0), e.g. Delta; with
   // normals, the reach of the broken-normal test (0 skips it).
   double normal_radius = 0.0;
+  // Point sets: the file's normals set aside and estimated as for a set
+  // without, for a file whose normals are unoriented (a face's all pointing
+  // inward), which mending one at a time cannot put right.
+  bool estimate_normals = false;
   int dimension = 0;           // point sets: 0 decides from the file, 2 or 3 forces it
   int threads = 1;             // the overloads without a pool
 };

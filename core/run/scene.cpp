@@ -246,6 +246,12 @@ SceneShape<D> parse_shape(const json& j, const Place& at, const std::string& sce
           (fs::path(shape.file).is_absolute() ? fs::path(shape.file) : base / shape.file).lexically_normal().string();
       if (!shape_file_format(shape.file))
         path_at.fail("unknown file type '" + lower_extension(shape.file) + "' (expected " + kShapeFileExtensions + ")");
+      if (const json* v = r.find("normals")) {
+        const std::string normals = as_string(*v, at.key("normals"));
+        if (normals != "given" && normals != "estimated")
+          at.key("normals").fail("expected \"given\" or \"estimated\", got \"" + normals + "\"");
+        shape.estimate_normals = normals == "estimated";
+      }
       std::error_code error;
       if (fs::is_directory(shape.resolved_file, error))
         path_at.fail_file("is a directory, not a shape file: " + shape.resolved_file, EISDIR);
@@ -605,6 +611,8 @@ json to_json(const Scene<D>& scene) {
       break;
     case ShapeType::file:
       shape["path"] = s.file;
+      // Only when set aside: a scene of the file's own normals reads as it did before the key existed.
+      if (s.estimate_normals) shape["normals"] = "estimated";
       break;
   }
   if (s.spacing > 0.0) shape["spacing"] = s.spacing;

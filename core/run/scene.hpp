@@ -32,6 +32,9 @@ struct SceneShape {
   double spacing = 0.0;                          // distance between samples; 0: the grid spacing h
   std::string file;                              // file: as written in the scene (relative to it)
   std::string resolved_file;                     // file: the path to open
+  // file: a point set's own normals set aside and estimated (`"normals": "estimated"`,
+  // SurfaceSampleOptions::estimate_normals).
+  bool estimate_normals = false;
 };
 
 template <int D>

@@ -52,6 +52,7 @@ SurfaceSamples load_file_shape(const Scene<D>& scene, double spacing, int thread
   options.spacing = spacing;
   options.normal_radius = scene.radius_factor * scene.h();
   options.dimension = D;
+  options.estimate_normals = scene.shape.estimate_normals;
   options.threads = threads;
   try {
     return load_surface_samples(scene.shape.resolved_file, options);

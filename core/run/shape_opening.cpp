@@ -1,5 +1,6 @@
 #include "core/run/shape_opening.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -12,6 +13,12 @@
 namespace amls {
 
 namespace {
+
+// x rounded to `digits` significant digits.
+double round_significant(double x, int digits) {
+  const double scale = std::pow(10.0, digits - 1 - static_cast<int>(std::floor(std::log10(x))));
+  return std::round(x * scale) / scale;
+}
 
 // A mesh's h is at most its bounding box's longest side over this many cells.
 // Its vertices' rule measures the vertices, and a coarse polyhedron's few
@@ -128,23 +135,17 @@ OpenedShape open_shape(SurfaceInput input, const ShapeOpening& options, ThreadPo
   step("choosing h", 1);
   out.spacing =
       out.dimension == 2 ? spacing_for<2>(input, options.resampling) : spacing_for<3>(input, options.resampling);
-  const bool set_aside = options.estimate_normals && !input.is_mesh && input.point_set.has_normals;
-  if (set_aside) {
-    input.point_set.has_normals = false;
-    for (Vec<3>& normal : input.point_set.points.normals) normal.setZero();
-  }
-  const bool estimating = !input.is_mesh && !input.point_set.has_normals;
+  if (options.spacing_digits > 0) out.spacing.h = round_significant(out.spacing.h, options.spacing_digits);
+  const bool estimating = !input.is_mesh && (options.estimate_normals || !input.point_set.has_normals);
   step(input.is_mesh ? "sampling the mesh" : estimating ? "estimating normals" : "checking the normals", 2);
   SurfaceSampleOptions sampling;
   sampling.spacing = out.spacing.h;
   sampling.normal_radius = options.resampling.radius_factor * out.spacing.h;
   sampling.dimension = out.dimension;
+  sampling.estimate_normals = options.estimate_normals;
   SurfaceSamples samples = surface_samples(std::move(input), sampling, pool);
   out.points = std::move(samples.points);
   out.source = std::move(samples.source);
-  if (set_aside)
-    out.source = "point set of " + std::to_string(out.points.size()) +
-                 " points with normals, set aside; normals estimated (Pratt fit, oriented over a neighbour graph)";
   out.warnings = std::move(samples.warnings);
   out.closed_mesh = std::move(samples.closed_mesh);
   return out;

@@ -36,10 +36,11 @@ struct ShapeOpening {
   // spacing or grid (else the rule), radius_factor (the normals' fit radius), the cost limits.
   PointSetResampling resampling;
   int dimension = 0;  // 0: from the file; 2 or 3 forces it
-  // A point set's normals estimated and oriented as for one without, the
-  // file's set aside: for a file whose normals are unoriented (a face's all
-  // pointing inward), which mending one at a time cannot put right.
+  // A point set's own normals set aside and estimated (SurfaceSampleOptions::estimate_normals).
   bool estimate_normals = false;
+  // h rounded to this many significant digits (0: as it is) before the samples are made
+  // with it: the editor's, whose saved scenes write h to 3 digits.
+  int spacing_digits = 0;
   // Called before each step, with its name, index and the count (for a progress display).
   std::function<void(const char* step, int index, int count)> step;
 };
