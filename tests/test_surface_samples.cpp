@@ -31,6 +31,16 @@ TEST_CASE("surface samples: point sets with and without normals, and meshes, all
   for (std::size_t i = 0; i < sphere.size(); ++i) CHECK(estimated.points.normals[i].dot(sphere.normals[i]) > 0.99);
 
   const SurfaceSamples mesh = load_surface_samples(dir.file("tetra.obj"), options);
+  CHECK(mesh.warnings.empty());
+  options.estimate_normals = true;  // nothing to set aside on a mesh: the same samples, and a warning saying so
+  const SurfaceSamples asked = load_surface_samples(dir.file("tetra.obj"), options);
+  CHECK(asked.points.positions == mesh.points.positions);
+  CHECK(asked.points.normals == mesh.points.normals);
+  REQUIRE(asked.warnings.size() == 1);
+  CHECK(asked.warnings[0] == dir.file("tetra.obj") +
+                                 ": a mesh's samples take its faces' normals; there are no point normals to set aside "
+                                 "and estimate");
+  options.estimate_normals = false;
   CHECK(mesh.dimension == 3);
   CHECK(mesh.points.size() > 100);
   CHECK(mesh.source.find("mesh of 4 triangles") != std::string::npos);

@@ -115,6 +115,10 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
                              " edges belong to three or more triangles");
     if (samples.flipped)
       out.warnings.push_back(path + ": the faces are wound clockwise seen from outside; normals were flipped outward");
+    // Said, so that a user who asked to estimate a mesh's normals knows why nothing changed.
+    if (options.estimate_normals)
+      out.warnings.push_back(path + ": a mesh's samples take its faces' normals; there are no point normals to set "
+                                    "aside and estimate");
     if (closed_and_consistently_wound(mesh)) out.closed_mesh = std::move(input.mesh);
     return out;
   }
