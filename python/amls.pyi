@@ -1,6 +1,6 @@
 # Type stub of the compiled module amls (python/*.cpp); the docstrings there say what each does.
 import os
-from typing import Any, Optional, Union
+from typing import Any, Literal, Optional, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -23,7 +23,7 @@ def write(
 def read_mesh(path: PathLike) -> tuple[FloatArray, IntArray]: ...
 def resample(
     points: Union[ArrayLike, PathLike],
-    normals: Optional[ArrayLike] = None,
+    normals: Union[ArrayLike, Literal["estimated"], None] = None,
     *,
     spacing: Optional[float] = None,
     grid: Optional[int] = None,
@@ -41,7 +41,7 @@ def resample(
 ) -> Union[tuple[FloatArray, FloatArray, dict[str, Any]], tuple[FloatArray, FloatArray, BoolArray, dict[str, Any]]]: ...
 def mesh(
     points: Union[ArrayLike, PathLike],
-    normals: Optional[ArrayLike] = None,
+    normals: Union[ArrayLike, Literal["estimated"], None] = None,
     *,
     spacing: Optional[float] = None,
     grid: Optional[int] = None,
@@ -67,7 +67,7 @@ class Surface:
     def __init__(
         self,
         points: Union[ArrayLike, PathLike],
-        normals: Optional[ArrayLike] = None,
+        normals: Union[ArrayLike, Literal["estimated"], None] = None,
         *,
         h: Optional[float] = None,
         grid: Optional[int] = None,

@@ -62,13 +62,12 @@ py::tuple resample(py::object points, py::object normals, py::object spacing, py
   check_dim(dim);
   opening.dimension = dim;
   if (!mesh.empty()) mesh_format_from_extension(mesh);
-  const std::string path = shape_path(shape);
-  std::optional<SurfaceInput> arrays;
-  if (path.empty()) arrays = arrays_input(shape);
+  PreparedShape prepared = prepare_shape(shape, opening);
+  const std::string& path = prepared.path;
   Resampled out;
   run_released([&] {
     ThreadPool pool(threads);
-    OpenedShape opened = open_input(path, arrays, opening, pool);
+    OpenedShape opened = open_input(prepared, opening, pool);
     out.warnings = opened.warnings;
     PointSetResampling options = opening.resampling;
     options.spacing = opened.spacing.h;
@@ -112,15 +111,13 @@ py::tuple mesh(py::object points, py::object normals, py::object spacing, py::ob
   ShapeOpening opening;
   opening.resampling = resampling_options(spacing, grid, radius_factor, variant, true, threads);
   if (!out.empty()) mesh_format_from_extension(out);
-  const std::string path = shape_path(shape);
-  std::optional<SurfaceInput> arrays;
-  if (path.empty()) arrays = arrays_input(shape);
+  PreparedShape prepared = prepare_shape(shape, opening);
   int dimension = 3;
   SurfaceMesh<2> mesh2;
   SurfaceMesh<3> mesh3;
   run_released([&] {
     ThreadPool pool(threads);
-    const OpenedShape opened = open_input(path, arrays, opening, pool);
+    const OpenedShape opened = open_input(prepared, opening, pool);
     dimension = opened.dimension;
     if (dimension == 2) {
       mesh_of<2>(opened, opening.resampling, out, pool, mesh2);
@@ -159,7 +156,9 @@ output), else the step of the grid lines its points lie on, else the median dist
 unless accept_loss.
 
   points           float64 array (n, 3) or (n, 2), or a file path
-  normals          unit normals, the same shape, or None (estimated)
+  normals          arrays: unit normals, the same shape, or None (estimated); a file path: None (the
+                   file's own, broken ones mended) or "estimated" (the file's set aside and estimated,
+                   as `--normals estimated`, for a file whose normals are unoriented)
   spacing          grid spacing h, in the input's units, within [1e-9, 1e9]
   grid             N cells within [1, 65536]: h = 1/N when the input lies within the unit
                    square/cube, else its bounding box's longest side / N
@@ -204,8 +203,8 @@ RuntimeError when the output misses part of the input (without accept_loss) or n
 
 The surface S(P) of a point set as a triangle mesh (2D: a polyline), by marching simplices over the
 grid cubes it crosses, as `amls resample --mesh` writes it (docs/mesh-export.md). h as resample()
-chooses it (pass the h a resample reported to mesh its points on their own grid); normals None are
-estimated; `points` may be a file path.
+chooses it (pass the h a resample reported to mesh its points on their own grid); `points` and
+`normals` as resample() takes them (None with arrays, or "estimated", are estimated).
 
   out   also write the mesh (.obj, .ply)
 

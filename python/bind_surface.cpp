@@ -143,13 +143,11 @@ class Surface {
     const ShapeArguments shape{std::move(points), std::move(normals), 0};
     ShapeOpening opening;
     opening.resampling = resampling_options(h, grid, radius_factor, variant, uniform_support, threads);
-    const std::string path = shape_path(shape);
-    std::optional<SurfaceInput> arrays;
-    if (path.empty()) arrays = arrays_input(shape);
+    PreparedShape prepared = prepare_shape(shape, opening);
     std::vector<std::string> warnings;
     run_released([&] {
       ThreadPool pool(threads);
-      OpenedShape opened = open_input(path, arrays, opening, pool);
+      OpenedShape opened = open_input(prepared, opening, pool);
       warnings = opened.warnings;
       h_ = opened.spacing.h;
       AmlsParameters parameters{radius_factor};
@@ -275,8 +273,9 @@ loop of steps drags them along a path.
 
 The AMLS surface S(P) of oriented points (paper, section 2), on a grid of spacing h, to evaluate,
 resample and deform step by step - the loop `amls deform` runs for a scene (Update_Normals,
-Update_Function, Resample, Deform, Hash). The points are opened as resample() opens them: normals
-None are estimated, `points` may be a file path, h (or grid) as resample()'s spacing (grid).
+Update_Function, Resample, Deform, Hash). The points are opened as resample() opens them: `points`
+and `normals` as resample() takes them (an array, a file path; None or "estimated"), h (or grid)
+as resample()'s spacing (grid).
 The grid is the one `amls resample` would use for these points.)")
       .def(py::init<py::object, py::object, py::object, py::object, double, const std::string&, bool, int>(),
            py::arg("points"), py::arg("normals") = py::none(), py::kw_only(), py::arg("h") = py::none(),

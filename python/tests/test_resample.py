@@ -1,6 +1,7 @@
 """resample: the command line's defaults, checks and report; the kitten scan to the same bytes."""
 import json
 import os
+import re
 
 import numpy as np
 import pytest
@@ -131,3 +132,39 @@ def test_broken_normals_are_mended_as_the_command_line_mends_them(amls, tmp_path
     radial = mended[0] - 0.5
     radial /= np.linalg.norm(radial, axis=1)[:, None]
     assert np.min(np.sum(radial * mended[1], axis=1)) > np.cos(np.radians(10.0))
+
+
+def test_a_files_normals_set_aside_as_the_command_line_sets_them_aside(amls, tmp_path):
+    # Every normal inward: consistent, so the file's own stay inward unless set aside.
+    points, normals = sphere(4000)
+    amls.write(str(tmp_path / "inward.ply"), points, -normals)
+    given = amls.resample(str(tmp_path / "inward.ply"), grid=32)
+    radial = (given[0] - 0.5) / np.linalg.norm(given[0] - 0.5, axis=1)[:, None]
+    assert np.max(np.sum(radial * given[1], axis=1)) < -0.9
+    estimated = amls.resample(str(tmp_path / "inward.ply"), "estimated", grid=32)
+    run_cli("resample", tmp_path / "inward.ply", "--grid", "32", "--normals", "estimated", "--out", tmp_path / "cli.ply")
+    amls.write(str(tmp_path / "py.ply"), estimated[0], estimated[1], spacing=estimated[2]["h"])
+    assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
+    radial = (estimated[0] - 0.5) / np.linalg.norm(estimated[0] - 0.5, axis=1)[:, None]
+    assert np.min(np.sum(radial * estimated[1], axis=1)) > 0.9
+    # On arrays "estimated" is None; a Surface and a mesh take it too.
+    from_arrays = amls.resample(points, "estimated", grid=32)
+    without = amls.resample(points, grid=32)
+    assert np.array_equal(from_arrays[0], without[0]) and np.array_equal(from_arrays[1], without[1])
+    surface = amls.Surface(str(tmp_path / "inward.ply"), "estimated", grid=32)
+    assert np.min(np.sum((surface.points - 0.5) * surface.normals, axis=1)) > 0
+    assert len(amls.mesh(str(tmp_path / "inward.ply"), "estimated", grid=32)[1]) > 0
+
+
+@pytest.mark.parametrize(
+    "normals, message",
+    [
+        ("guessed", 'normals: expected None, an array of unit normals or "estimated", got "guessed"'),
+        ("array", 'normals: only for arrays; a file brings its own (None), or "estimated" sets them aside'),
+    ],
+)
+def test_normals_that_a_file_cannot_take_raise(amls, tmp_path, normals, message):
+    points, good = sphere(500)
+    amls.write(str(tmp_path / "s.ply"), points, good)
+    with pytest.raises(ValueError, match=re.escape(message)):
+        amls.resample(str(tmp_path / "s.ply"), good if normals == "array" else normals)
