@@ -140,7 +140,7 @@ void add_resample_command(CLI::App& app) {
                   "given: a point set's own normals, broken ones (against or across those of the points beside "
                   "them) mended with a warning; estimated: the file's normals set aside, and normals estimated and "
                   "oriented as for a set without, for a file whose normals are unoriented (a face's all pointing "
-                  "inward)")
+                  "inward). A mesh's samples take its faces' normals either way")
       ->check(CLI::IsMember({"given", "estimated"}))
       ->capture_default_str();
   add_radius_factor_option(*cmd, options->resampling.radius_factor);
