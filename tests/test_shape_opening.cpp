@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@
 
 using namespace amls;
 using amls::test::TempDir;
+using amls::test::write_text;
 
 namespace {
 
@@ -126,4 +129,25 @@ TEST_CASE("opening a file stops when the pool's check says so") {
   CancelScope stop(pool, [&] { return ++polls > 2; });
   CHECK_THROWS_AS(open_shape_file(dir.file("cap.xyz"), ShapeOpening{}, pool), Cancelled);
   CHECK(polls == 3);
+}
+
+TEST_CASE("opening a mesh of a few vertices: h from its size, as too few vertices give no spacing") {
+  TempDir dir;
+  ThreadPool pool(1);
+  // A tetrahedron of side 1 (4 vertices, wound outward) and a unit square (4 vertices, open).
+  write_text(dir.file("tetra.off"), "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  write_text(dir.file("square.off"), "OFF\n4 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 1 2 3\n");
+  const OpenedShape tetra = open_shape_file(dir.file("tetra.off"), ShapeOpening{}, pool);
+  // A closed polyhedron: its mean thickness 3V/A over 16 bounds the longest side over 32.
+  const double area = 1.5 + std::sqrt(3.0) / 2.0;
+  CHECK(tetra.spacing.h == doctest::Approx(3.0 * (1.0 / 6.0) / area / 16.0));
+  CHECK(tetra.spacing.reason.find("its 4 vertices are too few to measure a spacing on") != std::string::npos);
+  CHECK(tetra.points.size() > 1000);
+  const OpenedShape square = open_shape_file(dir.file("square.off"), ShapeOpening{}, pool);
+  CHECK(square.spacing.h == doctest::Approx(1.0 / 32.0));
+  // Four vertices in one place have no size to take h from.
+  write_text(dir.file("point.off"), "OFF\n4 2 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n3 0 1 2\n3 0 2 3\n");
+  CHECK_THROWS_WITH_AS(open_shape_file(dir.file("point.off"), ShapeOpening{}, pool),
+                       (dir.file("point.off") + ": cannot choose h: the mesh's 4 vertices all lie at one position").c_str(),
+                       std::invalid_argument);
 }

@@ -198,6 +198,33 @@ TEST_CASE("extract_mesh: a surface through grid vertices leaves no vertices in o
         2);
 }
 
+TEST_CASE("extract_mesh: a flat patch lying on a grid plane is meshed, though its points sit on grid vertices") {
+  // The square [0.25, 0.75]^2 at z = 0.5 = 16 h, sampled on the grid's own vertices: F is zero
+  // there, which counts as positive, so the sign changes lie in the cubes below the points' own.
+  const double h = 1.0 / 32;
+  PointSet<3> square;
+  for (int i = 8; i <= 24; ++i)
+    for (int j = 8; j <= 24; ++j) square.add(Vec<3>(i * h, j * h, 0.5), Vec<3>::UnitZ());
+  const ExtractedMesh<3> out = mesh_of(square, h, Variant::exact);
+  REQUIRE_FALSE(out.mesh.cells.empty());
+  const MeshTopology topology = mesh_topology(out.mesh);
+  CHECK(topology.boundary > 0);  // an open patch
+  CHECK(topology.non_manifold == 0);
+  CHECK(topology.misoriented == 0);
+  double area = 0.0;
+  for (const auto& t : out.mesh.cells) {
+    const Vec<3> normal =
+        (out.mesh.vertices[t[1]] - out.mesh.vertices[t[0]]).cross(out.mesh.vertices[t[2]] - out.mesh.vertices[t[0]]);
+    area += 0.5 * normal.norm();
+    CHECK(normal.z() > 0.0);  // facing the normals' side
+  }
+  // On the plane, but for the margin that keeps a mesh vertex 1e-3 of an edge from its ends.
+  for (const Vec<3>& v : out.mesh.vertices) CHECK(std::abs(v.z() - 0.5) <= 1.001e-3 * h);
+  // The square's area, give or take a rim within the support.
+  CHECK(area > 0.25 * 0.9);
+  CHECK(area < 0.25 * 2.0);
+}
+
 TEST_CASE("extract_mesh: vertices lie on a lattice of h / 2^12 from the grid's origin") {
   // So that a face parallel to a grid plane is exactly flat: its vertices' roots, a few units of the
   // last place apart, round to one number (Open3D took the nearly coplanar triangles of CGAL's

@@ -103,23 +103,35 @@ class MeshBuilder {
     const Grid<D>& grid = surface_.grid();
     // The cubes holding a point whose corners change sign, in the points'
     // order; then, breadth first, the cubes across their faces that change sign.
+    // A point on a grid plane whose own cube does not change sign (the surface through grid vertices,
+    // where F's zero counts as positive: a flat face on a grid plane) may have its sign change in a
+    // cube across the plane. Those cubes start only what the walk from the others did not reach, so
+    // that where it reached everything the mesh is the same, triangle for triangle.
+    std::vector<IVec<D>> across_planes;
     for (const Vec<D>& p : surface_.points().positions) {
       const IVec<D> cube = grid.cell_of(p);
-      std::uint8_t& state = *cube_state_.try_emplace(Grid<D>::key(cube)).first;
-      if (state != kUnseen) continue;
-      const Corners corners = corner_values(cube);
-      const bool start = meshable(corners) && corners.negative != 0 && corners.negative != kAllCorners;
-      state = start ? kQueued : kNotStart;
-      if (start) queue_.push_back(cube);
+      if (try_start(cube)) continue;
+      const Vec<D> at = (p - grid.vertex_position(cube)) / grid.spacing();
+      IVec<D> across = IVec<D>::Zero();
+      for (int a = 0; a < D; ++a) across[a] = at[a] < kOnPlane ? -1 : at[a] > 1.0 - kOnPlane ? 1 : 0;
+      for_each_index_in_box<D>(IVec<D>(across.cwiseMin(0)), IVec<D>(across.cwiseMax(0)), [&](const IVec<D>& step) {
+        if (!step.isZero()) across_planes.push_back(IVec<D>(cube + step));
+      });
     }
-    for (std::size_t next = 0; next < queue_.size(); ++next) {
-      const IVec<D> cube = queue_[next];
-      const Corners corners = corner_values(cube);
-      if (!corners.defined) ++out_.stats.undefined_cubes;
-      if (!meshable(corners)) continue;
-      queue_neighbours(cube, corners.negative);
-      for (const KuhnSimplex<D>& simplex : simplices_) mesh_simplex(cube, corners, simplex);
-    }
+    std::size_t next = 0;
+    auto walk = [&] {
+      for (; next < queue_.size(); ++next) {
+        const IVec<D> cube = queue_[next];
+        const Corners corners = corner_values(cube);
+        if (!corners.defined) ++out_.stats.undefined_cubes;
+        if (!meshable(corners)) continue;
+        queue_neighbours(cube, corners.negative);
+        for (const KuhnSimplex<D>& simplex : simplices_) mesh_simplex(cube, corners, simplex);
+      }
+    };
+    walk();
+    for (const IVec<D>& cube : across_planes) try_start(cube);
+    walk();
     locate_vertices(variant, pool);
     // Where F is nearly zero at a grid vertex, the vertices beside it are merged (sliver_collapse.hpp).
     if constexpr (D == 3) out_.stats.collapsed_vertices = collapse_slivers(out_.mesh, grid);
@@ -143,6 +155,20 @@ class MeshBuilder {
     IVec<D> from;
     int direction;
   };
+
+  // How near a grid plane, in h, a point counts as on it for the start cubes.
+  static constexpr double kOnPlane = 1e-9;
+
+  // Queues `cube` as a start when its corners change sign; false when they do not (or it was seen).
+  bool try_start(const IVec<D>& cube) {
+    std::uint8_t& state = *cube_state_.try_emplace(Grid<D>::key(cube)).first;
+    if (state != kUnseen) return state == kQueued;
+    const Corners corners = corner_values(cube);
+    const bool start = meshable(corners) && corners.negative != 0 && corners.negative != kAllCorners;
+    state = start ? kQueued : kNotStart;
+    if (start) queue_.push_back(cube);
+    return start;
+  }
 
   // A cube with a corner where F is undefined is meshed only where the
   // caller says which side such a corner lies on.

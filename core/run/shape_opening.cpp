@@ -1,6 +1,7 @@
 #include "core/run/shape_opening.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -87,16 +88,28 @@ SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& g
   const std::vector<Vec<D>> positions = from_3d<D>(input.positions());
   PointSetResampling options = given;
   options.recorded_spacing = input.recorded_spacing();
+  const bool by_rule = given.spacing <= 0.0 && given.grid <= 0;
+  // A mesh of a few vertices (a tetrahedron, a quad) has too few to measure a spacing on, but its faces
+  // say how large it is: h from the bound below alone.
+  const bool few_vertices = input.is_mesh && positions.size() <= static_cast<std::size_t>(kSpacingNeighbours);
   SpacingChoice choice;
   try {
-    choice = choose_spacing(positions, options);
+    choice = by_rule && few_vertices ? SpacingChoice{std::numeric_limits<double>::infinity(), ""}
+                                     : choose_spacing(positions, options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
   }
-  const bool by_rule = given.spacing <= 0.0 && given.grid <= 0;
   if (input.is_mesh && by_rule) {
     const double longest = longest_side(positions);
-    if (choice.h > longest / kMinMeshCells) {
+    if (few_vertices) {
+      if (!(longest > 0.0))
+        throw std::invalid_argument(input.path + ": cannot choose h: the mesh's " + std::to_string(positions.size()) +
+                                    " vertices all lie at one position");
+      std::ostringstream reason;
+      reason << "the mesh's longest side (" << longest << ") / " << kMinMeshCells << ": its "
+             << positions.size() << " vertices are too few to measure a spacing on";
+      choice = {longest / kMinMeshCells, reason.str()};
+    } else if (choice.h > longest / kMinMeshCells) {
       std::ostringstream reason;
       reason << "the mesh's longest side (" << longest << ") / " << kMinMeshCells << ", finer than h = " << choice.h
              << " from " << choice.reason;
