@@ -142,7 +142,7 @@ void add_deform_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--max-steps", options->max_steps, "stop after this many steps (0: all)")->capture_default_str();
   cmd->add_option("--json", options->json_path, "also write the JSON report to this file");
-  cmd->add_option("--mesh", options->mesh_path, "write the last frame's surface as a mesh (.obj, .ply; 2D: a polyline)");
+  cmd->add_option("--mesh", options->mesh_path, "write the last frame's surface as a mesh (.obj, .ply, .stl; 2D: a polyline, .obj or .ply)");
   add_rims_option(*cmd, options->keep_rims);
   cmd->callback([options] {
     const ResamplePolicy policy = ResamplePolicy::parse(options->resample);

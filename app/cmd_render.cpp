@@ -43,7 +43,7 @@ constexpr const char* kDescription =
     "draw a point set, mesh or scene into a PNG, headless (OpenGL 3.3 core through EGL - a GPU if there is one, else "
     "Mesa's llvmpipe - or OSMesa; no display needed; --verbose says which).\n"
     "INPUT: a point set (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D; normals estimated where the file has none), "
-    "a triangle mesh (.obj, .ply or .off with faces; sampled at h with face normals) or a scene (.json; its state "
+    "a triangle mesh (.obj, .stl, or .ply or .off with faces; sampled at h with face normals) or a scene (.json; its state "
     "after --step K steps, with its handles).\n"
     "3D: lit, oriented splats (back faces red) in perspective. Default view: azimuth 30, elevation 20 degrees - "
     "the eye on +z turned 30 degrees towards +x and raised 20 degrees, +y up - looking at the centre of the "
@@ -66,7 +66,7 @@ void add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", kDescription);
   cmd->add_option("input", options->input,
-                  "point set (.ply, .off, .xyz, .pwn, .csv, .txt), mesh (.obj, .ply, .off) or scene (.json)")
+                  "point set (.ply, .off, .xyz, .pwn, .csv, .txt), mesh (.obj, .stl, .ply, .off) or scene (.json)")
       ->required();
   cmd->add_option("--out", options->out, "PNG file to write (written whole or not at all)")->required();
   cmd->add_option("--size", options->size, "image size WIDTHxHEIGHT in pixels, each 1.." + format_number(ranges::kImageSide.max))

@@ -100,7 +100,7 @@ void add_resample_command(CLI::App& app) {
       "outside) and write the new points: once, or twice where the input is sparser than h (--one-pass). "
       "Input: a point set with normals (.ply, .off, .xyz, .pwn, .csv, .txt; 2D or 3D; broken normals, against or "
       "across those of the points beside them within Delta, are mended with a warning), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a triangle "
-      "mesh (.obj, .ply or .off with faces; sampled at h with face normals).\n"
+      "mesh (.obj, .stl, or .ply or .off with faces; sampled at h with face normals).\n"
       "h: --spacing, else --grid, else from the input: the spacing the file records (amls writes it into its "
       "output), else the step of the grid lines its points lie on (amls's output), else the median distance from a "
       "point (a mesh: a vertex) to its 4th nearest neighbour, halved, and for a mesh at most its longest side / 32 "
@@ -112,7 +112,7 @@ void add_resample_command(CLI::App& app) {
   cmd->add_option("input", options->input, "point set or mesh to read (.ply, .off, .xyz, .pwn, .csv, .txt, .obj)")
       ->required();
   cmd->add_option("--out", options->output, "file to write (.ply: binary little endian, .xyz)")->required();
-  cmd->add_option("--mesh", options->mesh, "also write the new points' surface as a mesh (.obj, .ply; 2D: a polyline)");
+  cmd->add_option("--mesh", options->mesh, "also write the new points' surface as a mesh (.obj, .ply, .stl; 2D: a polyline, .obj or .ply)");
   CLI::Option* grid =
       cmd->add_option("--grid", options->resampling.grid,
                       "N cells: h = 1/N when the input lies within the unit square/cube, else its bounding box's "

@@ -3,7 +3,7 @@
 // (render/picture.hpp). Inputs, told apart by their extension and header:
 // - a scene (.json, docs/scene-format.md): its state after K steps (core/run/scene_state.hpp),
 //   drawn with its handles; h is the scene's grid spacing;
-// - a triangle mesh (.obj, or .ply with faces): sampled at h with face normals;
+// - a triangle mesh (.obj, .stl, or .ply or .off with faces): sampled at h with face normals;
 // - a point set (.ply, .xyz, 2D or 3D): as read, with normals estimated (Pratt fit
 //   over Delta) where the file has none.
 // For files, h is given or estimated (see PictureInputOptions::spacing).

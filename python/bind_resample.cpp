@@ -146,7 +146,7 @@ bounding box when it lies outside) and returns the new points: once, or twice wh
 sparser than h (one_pass). Input: a point set with normals (broken normals, against or across
 those of the points beside them within Delta, are mended with a warning), one without (normals estimated by the Pratt fit and oriented over a neighbour graph), or a file path
 (str or os.PathLike) of any format the command line reads - a point set, or a triangle mesh (.obj,
-or .ply or .off with faces; sampled at h with face normals).
+.stl, or .ply or .off with faces; sampled at h with face normals).
 
 h: spacing, else grid, else from the input: the spacing the file records (amls writes it into its
 output), else the step of the grid lines its points lie on, else the median distance from a point
@@ -169,7 +169,7 @@ unless accept_loss.
   accept_loss      return even when the output clearly misses part of the input (with a warning)
   dim              a file read as 2D or 3D (default: from the file)
   threads          within [1, 256]; the result does not depend on it
-  mesh             also write the new points' surface as a mesh (.obj, .ply; 2D: a polyline),
+  mesh             also write the new points' surface as a mesh (.obj, .ply, .stl; 2D: a polyline),
                    as `amls resample --mesh` does
   rim              arrays only: None, or one value per point, True (1) where the point is on an
                    open surface's rim (read(..., with_rim=True) or an earlier with_rim=True gives
@@ -206,7 +206,7 @@ grid cubes it crosses, as `amls resample --mesh` writes it (docs/mesh-export.md)
 chooses it (pass the h a resample reported to mesh its points on their own grid); `points` and
 `normals` as resample() takes them (None with arrays, or "estimated", are estimated).
 
-  out   also write the mesh (.obj, .ply)
+  out   also write the mesh (.obj, .ply, .stl)
 
 Returns vertices, float64 (n, 3) or (n, 2), and faces, int64 (m, 3) (2D: segments, (m, 2)),
 counter-clockwise seen from outside. Raises as resample() does, and RuntimeError when the surface

@@ -312,7 +312,7 @@ after the last one, resample() gives the scene's final frame.)")
       .def("mesh", &Surface::mesh, py::arg("out") = "", R"(mesh(out="") -> (vertices, faces)
 
 The current surface as a triangle mesh (2D: a polyline), as mesh() makes it; `out` also writes it
-(.obj, .ply).)");
+(.obj, .ply, .stl).)");
 }
 
 }  // namespace amls::python

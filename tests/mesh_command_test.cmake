@@ -39,6 +39,14 @@ amls_prints("triangles, closed, wrote ${WORK_DIR}/octahedron_mesh.obj"
             resample "${WORK_DIR}/octahedron.obj" --grid 32 --variant interpolated --out "${WORK_DIR}/octahedron.ply"
             --mesh "${WORK_DIR}/octahedron_mesh.obj")
 check_start("${WORK_DIR}/octahedron_mesh.obj" "# amls surface mesh (3D)")
+# STL, for slicers: written, and read back as a closed mesh to resample.
+amls_prints("triangles, closed, wrote ${WORK_DIR}/octahedron_mesh.stl"
+            resample "${WORK_DIR}/octahedron.obj" --grid 32 --out "${WORK_DIR}/octahedron.ply"
+            --mesh "${WORK_DIR}/octahedron_mesh.stl")
+check_start("${WORK_DIR}/octahedron_mesh.stl" "amls surface mesh, ")
+amls_prints("triangles, closed, wrote ${WORK_DIR}/again.ply"
+            resample "${WORK_DIR}/octahedron_mesh.stl" --grid 32 --out "${WORK_DIR}/again_points.ply"
+            --mesh "${WORK_DIR}/again.ply")
 # The mesh reads back as a mesh: amls renders it.
 execute_process(COMMAND "${AMLS}" render "${WORK_DIR}/octahedron_mesh.obj" --out "${WORK_DIR}/octahedron.png"
                         --size 32x32 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -50,6 +58,6 @@ amls_prints("segments, closed, wrote ${WORK_DIR}/clover.obj"
             deform "${SCENE}" --max-steps 1 --mesh "${WORK_DIR}/clover.obj")
 check_start("${WORK_DIR}/clover.obj" "# amls surface mesh (2D)")
 
-amls_fails("expected .obj or .ply" "${WORK_DIR}/bad.ply"
-           resample "${WORK_DIR}/octahedron.obj" --grid 32 --out "${WORK_DIR}/bad.ply" --mesh "${WORK_DIR}/bad.stl")
-amls_fails("expected .obj or .ply" "${WORK_DIR}/bad.stl" deform "${SCENE}" --max-steps 1 --mesh "${WORK_DIR}/bad.stl")
+amls_fails("expected .obj, .ply or .stl" "${WORK_DIR}/bad.ply"
+           resample "${WORK_DIR}/octahedron.obj" --grid 32 --out "${WORK_DIR}/bad.ply" --mesh "${WORK_DIR}/bad.3mf")
+amls_fails("expected .obj, .ply or .stl" "${WORK_DIR}/bad.3mf" deform "${SCENE}" --max-steps 1 --mesh "${WORK_DIR}/bad.3mf")

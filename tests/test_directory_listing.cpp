@@ -37,6 +37,7 @@ TEST_CASE("openable files are point sets, meshes and scenes, in any case") {
   CHECK(is_openable_file("s.json"));
   for (const char* name : {"a.OFF", "b.pwn", "c.csv", "d.txt"}) CHECK(is_openable_file(name));
   CHECK(is_openable_file("x.obj"));
-  CHECK(!is_openable_file("x.stl"));
+  CHECK(is_openable_file("x.STL"));
+  CHECK(!is_openable_file("x.3mf"));
   CHECK(!is_openable_file("ply"));
 }

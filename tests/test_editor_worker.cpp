@@ -316,13 +316,16 @@ TEST_CASE("Export mesh writes the current surface as a closed mesh, or says why 
   EditorWorker worker;
   worker.post(circle());
   worker.post(command::ExportMesh{dir.file("circle.obj")});
-  worker.post(command::ExportMesh{dir.file("circle.stl")});  // an unknown format
+  worker.post(command::ExportMesh{dir.file("circle.stl")});  // STL holds triangles, not a curve's segments
+  worker.post(command::ExportMesh{dir.file("circle.3mf")});  // an unknown format
   REQUIRE(worker.wait_until_idle(kPatience));
   const auto messages = worker.take_messages();
   CHECK(has_message(messages, Message::Level::info, "segments, closed to " + dir.file("circle.obj")));
-  CHECK(has_message(messages, Message::Level::error, "circle.stl"));
+  CHECK(has_message(messages, Message::Level::error, "circle.stl: an STL file holds triangles"));
+  CHECK(has_message(messages, Message::Level::error, "circle.3mf"));
   CHECK(std::filesystem::file_size(dir.file("circle.obj")) > 0);
   CHECK_FALSE(std::filesystem::exists(dir.file("circle.stl")));
+  CHECK_FALSE(std::filesystem::exists(dir.file("circle.3mf")));
 }
 
 TEST_CASE("Export mesh of a resampled file is the mesh `amls resample --mesh` wrote, byte for byte") {

@@ -1,9 +1,14 @@
 #include <doctest/doctest.h>
 
+#include <array>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "core/io/mesh_io.hpp"
+#include "core/io/point_set_io.hpp"
 #include "core/io/surface_samples.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -82,6 +87,97 @@ TEST_CASE(
   const SurfaceSamples samples = load_surface_samples(dir.file("cloud.PLY"), options);
   CHECK(samples.points.size() == 4);
   CHECK(samples.source.find("point set of 4 points with normals") != std::string::npos);
-  CHECK_THROWS_WITH_AS(read_mesh(dir.file("cloud.stl")), doctest::Contains("unknown mesh file extension '.stl'"),
+  CHECK_THROWS_WITH_AS(read_mesh(dir.file("cloud.3mf")), doctest::Contains("unknown mesh file extension '.3mf'"),
                        std::invalid_argument);
+}
+
+namespace {
+
+// A tetrahedron's four faces as STL facets, wound outward: ASCII text.
+const char* kAsciiTetra =
+    "solid tetra\n"
+    "facet normal 0 0 -1\n outer loop\n  vertex 0 0 0\n  vertex 0 1 0\n  vertex 1 0 0\n endloop\nendfacet\n"
+    "facet normal 0 -1 0\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 0 1\n endloop\nendfacet\n"
+    "facet normal -1 0 0\n outer loop\n  vertex 0 0 0\n  vertex 0 0 1\n  vertex 0 1 0\n endloop\nendfacet\n"
+    "facet normal 1 1 1\n outer loop\n  vertex 1 0 0\n  vertex 0 1 0\n  vertex 0 0 1\n endloop\nendfacet\n"
+    "endsolid tetra\n";
+
+// The same as binary STL (the header beginning with "solid", as some programs write it).
+std::string binary_tetra() {
+  const float corners[4][3][3] = {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}},
+                                  {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}},
+                                  {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+                                  {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  std::string bytes = "solid written by a program that says so in a binary header";
+  bytes.resize(80, ' ');
+  const std::uint32_t count = 4;
+  bytes.append(reinterpret_cast<const char*>(&count), 4);  // little endian on the machines amls builds for
+  for (const auto& triangle : corners) {
+    bytes.append(12, '\0');  // a normal of zeros, as many writers leave it
+    bytes.append(reinterpret_cast<const char*>(triangle), sizeof(triangle));
+    bytes.append(2, '\0');
+  }
+  return bytes;
+}
+
+}  // namespace
+
+TEST_CASE("mesh io: STL, ASCII and binary, its corners merged into shared vertices") {
+  TempDir dir;
+  write_text(dir.file("ascii.stl"), kAsciiTetra);
+  write_text(dir.file("binary.STL"), binary_tetra());
+  for (const char* name : {"ascii.stl", "binary.STL"}) {
+    CAPTURE(name);
+    CHECK(is_mesh_file(dir.file(name)));
+    const TriangleMesh mesh = read_mesh(dir.file(name));
+    REQUIRE(mesh.vertices.size() == 4);  // 12 corners, 4 positions
+    REQUIRE(mesh.triangles.size() == 4);
+    CHECK(mesh.vertices[0] == Vec<3>(0, 0, 0));
+    CHECK(mesh.vertices[1] == Vec<3>(0, 1, 0));
+    CHECK(mesh.vertices[2] == Vec<3>(1, 0, 0));
+    CHECK(mesh.vertices[3] == Vec<3>(0, 0, 1));
+    CHECK(mesh.triangles[0] == std::array<std::uint32_t, 3>{0, 1, 2});
+    CHECK(mesh.triangles[3] == std::array<std::uint32_t, 3>{2, 1, 3});
+    // Closed and wound outward, so its samples point out and its inside is known.
+    SurfaceSampleOptions options;
+    options.spacing = 0.05;
+    const SurfaceSamples samples = load_surface_samples(dir.file(name), options);
+    CHECK(samples.closed_mesh.has_value());
+    CHECK(samples.warnings.empty());
+  }
+  // An STL file is a mesh, never a point set.
+  CHECK_THROWS_WITH_AS(read_point_set(dir.file("ascii.stl"), 0),
+                       doctest::Contains("unknown point-set file extension '.stl'"), std::invalid_argument);
+}
+
+TEST_CASE("mesh io: broken STL files are refused with the line or triangle") {
+  TempDir dir;
+  auto error_of = [&](const std::string& text) {
+    write_text(dir.file("bad.stl"), text);
+    try {
+      read_mesh(dir.file("bad.stl"));
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string file = dir.file("bad.stl");
+  CHECK(error_of("") == file + ": empty file: expected an STL file");
+  CHECK(error_of("hello\n") == file + ": line 1: expected an STL file: binary, or ASCII starting with 'solid'");
+  CHECK(error_of("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\n") ==
+        file + ": line 7: a facet of 2 vertices (STL facets are triangles)");
+  CHECK(error_of("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 nan\n") ==
+        file + ": line 4: 'nan' is not a finite number");
+  CHECK(error_of("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n") == file + ": the file ends inside a facet");
+  CHECK(error_of("solid s\nvertex 0 0 0\n") == file + ": line 2: 'vertex' outside a facet");
+  // A binary file whose count says more triangles than it holds is not binary; nor is it ASCII.
+  std::string cut = binary_tetra();
+  cut.resize(cut.size() - 10);
+  CHECK(error_of(cut) == file + ": neither ASCII STL (binary bytes on line 1) nor binary STL (274 bytes where its "
+                                "count of 4 triangles needs 284)");
+  // A binary corner that is not a finite number.
+  std::string nan = binary_tetra();
+  const float bad = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(nan.data() + 84 + 50 + 12, &bad, 4);
+  CHECK(error_of(nan) == file + ": triangle 1: a corner with a non-finite coordinate");
 }

@@ -262,10 +262,12 @@ TEST_CASE("one rule for file extensions: lower-cased, and each reader's list") {
   CHECK(shape_file_format("x.off") == ShapeFileFormat::off);
   CHECK(shape_file_format("x.OBJ") == ShapeFileFormat::obj);
   for (const char* text : {"x.xyz", "x.PWN", "x.csv", "x.Txt"}) CHECK(shape_file_format(text) == ShapeFileFormat::xyz);
-  CHECK_FALSE(shape_file_format("x.stl"));
+  CHECK(shape_file_format("x.STL") == ShapeFileFormat::stl);
+  CHECK_FALSE(shape_file_format("x.3mf"));
   CHECK_FALSE(shape_file_format("x"));
   CHECK(is_point_set_file("x.off"));
   CHECK_FALSE(is_point_set_file("x.obj"));
+  CHECK_FALSE(is_point_set_file("x.stl"));
   CHECK_FALSE(is_point_set_file("x.json"));
 }
 

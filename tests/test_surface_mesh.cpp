@@ -334,6 +334,35 @@ TEST_CASE("write_surface_mesh: OBJ and PLY read back as the same triangle mesh")
   CHECK(obj.find("\nf 1//1 ") != std::string::npos);
 }
 
+TEST_CASE("write_surface_mesh: STL reads back as the same triangles, to float precision, and closed") {
+  TempDir dir;
+  const ExtractedMesh<3> out = mesh_of(
+      sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, sphere_points_for_spacing(0.2, 1.0 / 32)), 1.0 / 32, Variant::exact);
+  const SurfaceMesh<3>& mesh = out.mesh;
+  REQUIRE(!mesh.cells.empty());
+  const std::string path = dir.file("sphere.stl");
+  write_surface_mesh(path, mesh);
+  CHECK(std::filesystem::file_size(path) == 84 + 50 * mesh.cells.size());
+  const TriangleMesh back = read_mesh(path);
+  // Each corner once again: the welded vertices are the mesh's, numbered as the triangles first name them.
+  CHECK(back.vertices.size() == mesh.vertices.size());
+  REQUIRE(back.triangles.size() == mesh.cells.size());
+  for (std::size_t k = 0; k < mesh.cells.size(); ++k)
+    for (int c = 0; c < 3; ++c)
+      CHECK(back.vertices[back.triangles[k][static_cast<std::size_t>(c)]] ==
+            mesh.vertices[mesh.cells[k][static_cast<std::size_t>(c)]].cast<float>().cast<double>());
+  SurfaceMesh<3> again;
+  again.vertices = back.vertices;
+  again.cells = back.triangles;
+  CHECK(mesh_topology(again).closed());
+  // A 2D mesh has segments, which STL cannot hold.
+  const ExtractedMesh<2> curve = mesh_of(sample_circle(Vec<2>(0.5, 0.5), 0.2, 100), 1.0 / 64, Variant::exact);
+  CHECK_THROWS_WITH_AS(write_surface_mesh(dir.file("circle.stl"), curve.mesh),
+                       doctest::Contains("an STL file holds triangles, and a 2D mesh is segments"),
+                       std::invalid_argument);
+  CHECK_FALSE(std::filesystem::exists(dir.file("circle.stl")));
+}
+
 TEST_CASE("write_surface_mesh: a 2D polyline as OBJ lines and PLY edges") {
   TempDir dir;
   const ExtractedMesh<2> out = mesh_of(sample_circle(Vec<2>(0.5, 0.5), 0.2, 100), 1.0 / 64, Variant::exact);
@@ -388,8 +417,8 @@ TEST_CASE("write_surface_mesh: a 2D polyline as OBJ lines and PLY edges") {
 TEST_CASE("write_surface_mesh: a bad extension or a broken mesh is refused before anything is written") {
   TempDir dir;
   SurfaceMesh<3> mesh = tetrahedron();
-  CHECK_THROWS_WITH_AS(write_surface_mesh(dir.file("t.stl"), mesh), doctest::Contains("expected .obj or .ply"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(write_surface_mesh(dir.file("t.3mf"), mesh),
+                       doctest::Contains("expected .obj, .ply or .stl"), std::invalid_argument);
   CHECK_THROWS_AS(mesh_format_from_extension(dir.file("t")), std::invalid_argument);
   mesh.vertices[2].x() = std::nan("");
   CHECK_THROWS_WITH_AS(write_surface_mesh(dir.file("t.obj"), mesh), doctest::Contains("vertex 2"),
@@ -432,6 +461,6 @@ TEST_CASE("export_surface_mesh: says whether the mesh is closed, and writes no e
   CHECK_THROWS_WITH_AS(export_surface_mesh(dir.file("none.obj"), sparse, grid, {}, Variant::exact, 1),
                        doctest::Contains("not written"), std::runtime_error);
   CHECK_FALSE(std::filesystem::exists(dir.file("none.obj")));
-  CHECK_THROWS_AS(export_surface_mesh(dir.file("sphere.stl"), sphere, grid, {}, Variant::exact, 1),
+  CHECK_THROWS_AS(export_surface_mesh(dir.file("sphere.3mf"), sphere, grid, {}, Variant::exact, 1),
                   std::invalid_argument);
 }

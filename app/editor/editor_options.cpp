@@ -22,7 +22,7 @@ std::optional<int> parse_editor_options(int argc, char** argv, EditorOptions& op
       "Press H in the window for the keyboard and mouse controls."};
   app.set_version_flag("--version", "amls-editor 0.1.0");
   std::string size;
-  app.add_option("input", options.input, "point set (.ply, .off, .xyz, .pwn, .csv, .txt; normals estimated where missing), mesh (.obj, .ply, .off) or scene (.json) to open");
+  app.add_option("input", options.input, "point set (.ply, .off, .xyz, .pwn, .csv, .txt; normals estimated where missing), mesh (.obj, .stl, .ply, .off) or scene (.json) to open");
   std::string normals = "given";
   app.add_option("--normals", normals,
                  "given: a point set's own normals, broken ones mended; estimated: set aside and estimated as for "

@@ -81,7 +81,7 @@ std::optional<std::string> FileBrowser::draw(bool& open, bool& estimate_normals)
   ImGui::SameLine();
   if (ImGui::Button("Cancel")) open = false;
   ImGui::SameLine();
-  ImGui::TextDisabled(".ply .off .obj .xyz .pwn .csv .txt (normals estimated where missing), .json scenes");
+  ImGui::TextDisabled(".ply .off .obj .stl .xyz .pwn .csv .txt (normals estimated where missing), .json scenes");
   ImGui::Checkbox("Estimate normals", &estimate_normals);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A point set's own normals set aside and estimated as for one without: for a scan whose "

@@ -14,7 +14,7 @@ struct UiState {
   bool show_curve = true;   // 2D: the MLS curve
 
   std::string export_path;
-  std::string mesh_path;  // Export mesh writes here (.obj, .ply)
+  std::string mesh_path;  // Export mesh writes here (.obj, .ply, .stl)
   std::string scene_path;
   std::string screenshot_path;
 

@@ -20,10 +20,11 @@ std::string lower_extension(const std::string& path) {
 }
 
 std::optional<ShapeFileFormat> shape_file_format(const std::string& path) {
-  static constexpr std::array<std::pair<std::string_view, ShapeFileFormat>, 7> kExtensions{{
+  static constexpr std::array<std::pair<std::string_view, ShapeFileFormat>, 8> kExtensions{{
       {".ply", ShapeFileFormat::ply},
       {".off", ShapeFileFormat::off},
       {".obj", ShapeFileFormat::obj},
+      {".stl", ShapeFileFormat::stl},
       {".xyz", ShapeFileFormat::xyz},
       {".pwn", ShapeFileFormat::xyz},  // CGAL's points with normals: x y z nx ny nz
       {".csv", ShapeFileFormat::xyz},
@@ -37,7 +38,7 @@ std::optional<ShapeFileFormat> shape_file_format(const std::string& path) {
 
 bool is_point_set_file(const std::string& path) {
   const std::optional<ShapeFileFormat> format = shape_file_format(path);
-  return format && *format != ShapeFileFormat::obj;
+  return format && *format != ShapeFileFormat::obj && *format != ShapeFileFormat::stl;
 }
 
 }  // namespace amls

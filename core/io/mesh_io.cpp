@@ -9,6 +9,7 @@
 
 #include "core/io/file_format.hpp"
 #include "core/io/raw_point_file.hpp"
+#include "core/io/stl_format.hpp"
 #include "core/util/file_error.hpp"
 
 namespace amls {
@@ -82,10 +83,11 @@ TriangleMesh read_mesh(const std::string& path) {
   const std::optional<ShapeFileFormat> format = shape_file_format(path);
   if (!format || *format == ShapeFileFormat::xyz)
     throw std::invalid_argument(path + ": unknown mesh file extension '" + lower_extension(path) +
-                                "' (expected .obj, .ply or .off)");
+                                "' (expected .obj, .stl, .ply or .off)");
   std::ifstream in = open_binary(path);
   if (*format == ShapeFileFormat::obj) return read_obj(in, path);
   const std::uint64_t size = file_size(path);
+  if (*format == ShapeFileFormat::stl) return detail::read_stl(in, size, path);
   detail::RawPointFile raw =
       *format == ShapeFileFormat::ply ? detail::read_ply(in, size, path) : detail::read_off(in, size, path);
   if (!raw.face_problem.empty()) fail(path, raw.face_problem);
@@ -100,7 +102,7 @@ TriangleMesh read_mesh(const std::string& path) {
 bool is_mesh_file(const std::string& path) {
   const std::optional<ShapeFileFormat> format = shape_file_format(path);
   if (!format || *format == ShapeFileFormat::xyz) return false;
-  if (*format == ShapeFileFormat::obj) return true;
+  if (*format == ShapeFileFormat::obj || *format == ShapeFileFormat::stl) return true;
   std::ifstream in = open_binary(path);
   return *format == ShapeFileFormat::ply ? detail::ply_face_count(in, path) > 0
                                          : detail::off_face_count(in, file_size(path), path) > 0;

@@ -7,6 +7,7 @@
 
 #include "core/io/file_format.hpp"
 #include "core/io/raw_point_file.hpp"
+#include "core/io/stl_format.hpp"
 
 namespace amls {
 
@@ -110,6 +111,18 @@ template <int D>
 void write_mesh(const std::string& path, const SurfaceMesh<D>& mesh) {
   const MeshFileFormat format = mesh_format_from_extension(path);
   check_writable(path, mesh);
+  if constexpr (D == 2) {
+    if (format == MeshFileFormat::stl)
+      throw std::invalid_argument("cannot write " + path + ": an STL file holds triangles, and a 2D mesh is segments "
+                                  "(write .obj or .ply)");
+  } else if (format == MeshFileFormat::stl) {
+    try {
+      detail::write_through_temporary(path, [&](detail::FileSink& sink) { detail::write_stl(sink, mesh); });
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("cannot write " + path + ": " + e.what());
+    }
+    return;
+  }
   detail::write_through_temporary(path, [&](detail::FileSink& sink) {
     if (format == MeshFileFormat::obj) {
       write_obj(sink, mesh);
@@ -125,8 +138,10 @@ MeshFileFormat mesh_format_from_extension(const std::string& path) {
   const std::string extension = lower_extension(path);
   if (extension == ".obj") return MeshFileFormat::obj;
   if (extension == ".ply") return MeshFileFormat::ply;
-  if (extension.empty()) throw std::invalid_argument(path + ": no file extension (expected .obj or .ply for a mesh)");
-  throw std::invalid_argument(path + ": unknown mesh file extension '" + extension + "' (expected .obj or .ply)");
+  if (extension == ".stl") return MeshFileFormat::stl;
+  if (extension.empty())
+    throw std::invalid_argument(path + ": no file extension (expected .obj, .ply or .stl for a mesh)");
+  throw std::invalid_argument(path + ": unknown mesh file extension '" + extension + "' (expected .obj, .ply or .stl)");
 }
 
 void write_surface_mesh(const std::string& path, const SurfaceMesh<2>& mesh) { write_mesh(path, mesh); }

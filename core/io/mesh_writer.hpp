@@ -9,6 +9,8 @@
 //   nx ny nz, then 3D triangles as the `face` element's `vertex_indices`
 //   (uchar count, int indices), 2D segments as the `edge` element's `vertex1
 //   vertex2`; an `amls dim N` comment as in point-set files.
+// - STL (`.stl`, 3D only): binary, float32 corners (core/io/stl_format.hpp),
+//   for slicers that read nothing else; the vertices' normals are not kept.
 // A 2D mesh is written with z = 0 and nz = 0. The file is written through a
 // temporary file renamed over `path`, as point sets are (point_set_io.hpp).
 #include <string>
@@ -17,7 +19,7 @@
 
 namespace amls {
 
-enum class MeshFileFormat { obj, ply };
+enum class MeshFileFormat { obj, ply, stl };
 
 // By extension, in any case. Throws std::invalid_argument naming the path and
 // the accepted extensions.

@@ -153,7 +153,7 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
                                 std::to_string(dimension_override));
   reject_directory(path, "point-set file");
   const std::optional<ShapeFileFormat> format = shape_file_format(path);
-  if (!format || *format == ShapeFileFormat::obj) {
+  if (!is_point_set_file(path)) {
     const std::string extension = lower_extension(path);
     throw std::invalid_argument(path + ": " +
                                 (extension.empty() ? std::string("no file extension")

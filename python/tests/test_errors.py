@@ -46,7 +46,7 @@ READ_CASES = [
     ("folder", IsADirectoryError),  # a directory is named as one before its extension is judged
     ("broken.xyz", OSError),
     ("empty.xyz", OSError),
-    ("points.stl", ValueError),
+    ("points.3mf", ValueError),
 ]
 
 
@@ -134,7 +134,7 @@ def test_bad_options_raise_value_errors(amls, files):
     assert str(raised(ValueError, lambda: surface.F(np.zeros((2, 4)))).value) == \
         "x: expected an (n, 3) array, got shape (2, 4)"
     raised(ValueError, lambda: surface.project([np.nan, 0.0, 0.0]))
-    raised(ValueError, lambda: surface.mesh("m.stl"))
+    raised(ValueError, lambda: surface.mesh("m.3mf"))
 
 
 def test_run_scene_tells_files_from_their_contents(amls, files):

@@ -69,6 +69,23 @@ def test_a_resampled_spheres_mesh_is_watertight_in_both_formats(amls, tmp_path, 
     assert mesh.euler_poincare_characteristic() == 2
 
 
+def test_a_resampled_spheres_stl_is_watertight_once_open3d_merges_its_corners(amls, tmp_path):
+    # STL gives every triangle its own corners: Open3D reads them so, and merges them on request.
+    points, normals = sphere(6000)
+    new_points, new_normals, report = amls.resample(points, normals, grid=64)
+    vertices, faces = amls.mesh(new_points, new_normals, spacing=report["h"], out=str(tmp_path / "m.stl"))
+    mesh = watertight(tmp_path / "m.stl")
+    assert len(mesh.triangles) == len(faces)
+    mesh.remove_duplicated_vertices()
+    assert len(mesh.vertices) == len(vertices)
+    assert mesh.is_watertight() and mesh.is_orientable()
+    assert mesh.euler_poincare_characteristic() == 2
+    # And amls reads it back as the same closed mesh, to float precision.
+    back_vertices, back_faces = amls.read_mesh(str(tmp_path / "m.stl"))
+    assert len(back_vertices) == len(vertices) and len(back_faces) == len(faces)
+    assert np.allclose(back_vertices[back_faces], vertices[faces], rtol=0, atol=1e-6)
+
+
 def test_the_cell_by_cell_check_finds_what_open3d_finds(tmp_path):
     # Two spheres' meshes, one pushed into the other: crossing triangles along a circle.
     points, normals = sphere(1500)

@@ -81,7 +81,7 @@ def test_normals_are_estimated_when_missing(amls):
         ({"threads": 0}, ValueError, r"threads: must be within \[1, 256\]"),
         ({"variant": "fast"}, ValueError, "exact"),
         ({"spacing": 1e-6}, ValueError, "points: h = 1e-06 would give about .* --spacing .* or larger would fit"),
-        ({"mesh": "m.stl"}, ValueError, "m.stl"),
+        ({"mesh": "m.3mf"}, ValueError, "m.3mf"),
     ],
 )
 def test_out_of_range_arguments_raise_with_the_command_lines_messages(amls, arguments, error, message):
