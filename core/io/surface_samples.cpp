@@ -77,6 +77,7 @@ SurfaceInput read_surface_input(const std::string& path, int dimension) {
     if (dimension == 2) throw std::runtime_error(path + ": a triangle mesh is a 3D shape, not 2D");
     in.mesh = read_mesh(path);
     if (in.mesh.triangles.empty()) throw std::runtime_error(path + ": the mesh has no faces");
+    in.orientation = orient_consistently(in.mesh);
     return in;
   }
   in.point_set = read_point_set(path, dimension);
@@ -113,6 +114,13 @@ SurfaceSamples surface_samples(SurfaceInput input, const SurfaceSampleOptions& o
     if (samples.nonmanifold_edges > 0)
       out.warnings.push_back(path + ": " + std::to_string(samples.nonmanifold_edges) +
                              " edges belong to three or more triangles");
+    if (input.orientation.turned > 0)
+      out.warnings.push_back(path + ": " + std::to_string(input.orientation.turned) + " of " +
+                             std::to_string(mesh.triangles.size()) +
+                             " triangles were wound against their neighbours and were turned to agree with them");
+    if (input.orientation.conflicts > 0)
+      out.warnings.push_back(path + ": " + std::to_string(input.orientation.conflicts) +
+                             " edges join triangles that no winding makes agree (a one-sided surface)");
     if (samples.flipped)
       out.warnings.push_back(path + ": the faces are wound clockwise seen from outside; normals were flipped outward");
     // Said, so that a user who asked to estimate a mesh's normals knows why nothing changed.

@@ -13,6 +13,7 @@
 
 #include "core/geometry/point_set.hpp"
 #include "core/io/mesh_io.hpp"
+#include "core/io/mesh_orientation.hpp"
 #include "core/io/point_set_io.hpp"
 #include "core/util/thread_pool.hpp"
 
@@ -47,7 +48,8 @@ struct SurfaceSamples {
 struct SurfaceInput {
   std::string path;
   bool is_mesh = false;
-  TriangleMesh mesh;          // when is_mesh
+  TriangleMesh mesh;          // when is_mesh, its faces wound consistently (mesh_orientation.hpp)
+  MeshOrientation orientation;  // what winding them consistently did
   LoadedPointSet point_set;   // otherwise
   int dimension() const { return is_mesh ? 3 : point_set.dimension; }
   // The positions a spacing is measured on: a mesh's vertices, a point set's points.
@@ -56,7 +58,9 @@ struct SurfaceInput {
   double recorded_spacing() const { return is_mesh ? 0.0 : point_set.spacing; }
 };
 
-// Reads `path` (dimension: 0 decides from the file, 2 or 3 forces it).
+// Reads `path` (dimension: 0 decides from the file, 2 or 3 forces it); a
+// mesh's faces are wound consistently (orient_consistently) before h is
+// chosen on it, as its thickness needs an inside.
 // Throws std::runtime_error naming the file if it cannot be read, holds no
 // points or is a mesh without faces, and for a mesh read as 2D.
 SurfaceInput read_surface_input(const std::string& path, int dimension);
