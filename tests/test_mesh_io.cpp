@@ -147,7 +147,7 @@ TEST_CASE("mesh io: STL, ASCII and binary, its corners merged into shared vertic
   }
   // An STL file is a mesh, never a point set.
   CHECK_THROWS_WITH_AS(read_point_set(dir.file("ascii.stl"), 0),
-                       doctest::Contains("unknown point-set file extension '.stl'"), std::invalid_argument);
+                       doctest::Contains("a .stl file holds a triangle mesh, not a point set"), std::invalid_argument);
 }
 
 TEST_CASE("mesh io: broken STL files are refused with the line or triangle") {

@@ -248,7 +248,7 @@ TEST_CASE("the format follows the extension, in any case - other extensions are 
   CHECK_THROWS_WITH_AS(format_from_extension("points"), doctest::Contains("no file extension"), std::invalid_argument);
   // Reading takes more formats than writing; a mesh-only or unknown extension is refused before the file is opened.
   CHECK_THROWS_WITH_AS(read_point_set("shape.OBJ"),
-                       doctest::Contains("unknown point-set file extension '.obj' (expected .ply, .off, .xyz, .pwn"),
+                       doctest::Contains("a .obj file holds a triangle mesh, not a point set (expected .ply, .off, .xyz, .pwn"),
                        std::invalid_argument);
   CHECK_THROWS_WITH_AS(read_point_set("points.dat"), doctest::Contains("'.dat'"), std::invalid_argument);
   CHECK_THROWS_WITH_AS(read_point_set("points"), doctest::Contains("no file extension"), std::invalid_argument);

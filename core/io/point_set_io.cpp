@@ -157,7 +157,8 @@ LoadedPointSet read_point_set(const std::string& path, int dimension_override) {
     const std::string extension = lower_extension(path);
     throw std::invalid_argument(path + ": " +
                                 (extension.empty() ? std::string("no file extension")
-                                                   : "unknown point-set file extension '" + extension + "'") +
+                                 : format ? "a " + extension + " file holds a triangle mesh, not a point set"
+                                          : "unknown point-set file extension '" + extension + "'") +
                                 " (expected " + kPointSetFileExtensions + ")");
   }
   std::ifstream in(path, std::ios::binary);
