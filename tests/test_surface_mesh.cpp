@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/shapes.hpp"
@@ -306,12 +307,21 @@ TEST_CASE("extract_mesh: the mesh does not depend on the thread count") {
   CHECK(one.mesh.cells == two.mesh.cells);
 }
 
+namespace {
+
+// The mesh the writers' tests write: a sphere of radius 0.2 at h = 1/32.
+SurfaceMesh<3> written_sphere_mesh() {
+  ExtractedMesh<3> out = mesh_of(
+      sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, sphere_points_for_spacing(0.2, 1.0 / 32)), 1.0 / 32, Variant::exact);
+  REQUIRE(!out.mesh.cells.empty());
+  return std::move(out.mesh);
+}
+
+}  // namespace
+
 TEST_CASE("write_surface_mesh: OBJ and PLY read back as the same triangle mesh") {
   TempDir dir;
-  const ExtractedMesh<3> out = mesh_of(
-      sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, sphere_points_for_spacing(0.2, 1.0 / 32)), 1.0 / 32, Variant::exact);
-  const SurfaceMesh<3>& mesh = out.mesh;
-  REQUIRE(!mesh.cells.empty());
+  const SurfaceMesh<3> mesh = written_sphere_mesh();
   for (const char* name : {"sphere.obj", "sphere.PLY"}) {
     CAPTURE(name);
     const std::string path = dir.file(name);
@@ -336,10 +346,7 @@ TEST_CASE("write_surface_mesh: OBJ and PLY read back as the same triangle mesh")
 
 TEST_CASE("write_surface_mesh: STL reads back as the same triangles, to float precision, and closed") {
   TempDir dir;
-  const ExtractedMesh<3> out = mesh_of(
-      sample_sphere(Vec<3>(0.5, 0.5, 0.5), 0.2, sphere_points_for_spacing(0.2, 1.0 / 32)), 1.0 / 32, Variant::exact);
-  const SurfaceMesh<3>& mesh = out.mesh;
-  REQUIRE(!mesh.cells.empty());
+  const SurfaceMesh<3> mesh = written_sphere_mesh();
   const std::string path = dir.file("sphere.stl");
   write_surface_mesh(path, mesh);
   CHECK(std::filesystem::file_size(path) == 84 + 50 * mesh.cells.size());

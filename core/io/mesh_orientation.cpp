@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,7 @@ namespace {
 struct EdgeUse {
   std::uint64_t edge;
   std::uint32_t triangle;
+  std::uint8_t side;  // which of the triangle's three edges
   bool ascending;
 };
 
@@ -27,7 +29,7 @@ std::vector<EdgeUse> sorted_edge_uses(const TriangleMesh& mesh) {
       const std::uint32_t b = mesh.triangles[t][static_cast<std::size_t>((k + 1) % 3)];
       if (a == b) continue;  // a degenerate triangle's collapsed edge joins nothing
       const auto [lo, hi] = std::minmax(a, b);
-      uses.push_back({std::uint64_t{lo} << 32 | hi, t, a < b});
+      uses.push_back({std::uint64_t{lo} << 32 | hi, t, static_cast<std::uint8_t>(k), a < b});
     }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
     return x.edge != y.edge ? x.edge < y.edge : x.triangle < y.triangle;
@@ -40,20 +42,21 @@ std::vector<EdgeUse> sorted_edge_uses(const TriangleMesh& mesh) {
 MeshOrientation orient_consistently(TriangleMesh& mesh) {
   MeshOrientation out;
   const std::vector<EdgeUse> uses = sorted_edge_uses(mesh);
-  // Per triangle, its neighbours across edges that exactly two triangles share, and whether the
-  // two run through the edge alike (then one of them must turn for them to agree).
+  // Per triangle edge (3 t + side), the neighbour across it where exactly two triangles share
+  // it, and whether the two run through the edge alike (then one of them must turn for them to agree).
   struct Link {
     std::uint32_t other;
     bool alike;
   };
-  std::vector<std::vector<Link>> links(mesh.triangles.size());
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<Link> links(3 * mesh.triangles.size(), Link{kNone, false});
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
     if (j - i == 2 && uses[i].triangle != uses[i + 1].triangle) {
       const bool alike = uses[i].ascending == uses[i + 1].ascending;
-      links[uses[i].triangle].push_back({uses[i + 1].triangle, alike});
-      links[uses[i + 1].triangle].push_back({uses[i].triangle, alike});
+      links[3 * std::size_t{uses[i].triangle} + uses[i].side] = {uses[i + 1].triangle, alike};
+      links[3 * std::size_t{uses[i + 1].triangle} + uses[i + 1].side] = {uses[i].triangle, alike};
     }
     i = j;
   }
@@ -69,7 +72,9 @@ MeshOrientation orient_consistently(TriangleMesh& mesh) {
       const std::uint32_t t = queue.front();
       queue.pop_front();
       part.push_back(t);
-      for (const Link& link : links[t]) {
+      for (std::size_t side = 0; side < 3; ++side) {
+        const Link& link = links[3 * std::size_t{t} + side];
+        if (link.other == kNone) continue;
         const std::uint8_t wanted = static_cast<std::uint8_t>(turn[t] ^ (link.alike ? 1 : 0));
         if (!seen[link.other]) {
           seen[link.other] = 1;

@@ -1,7 +1,6 @@
 #include "core/run/shape_opening.hpp"
 
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -92,24 +91,25 @@ SpacingChoice spacing_for(const SurfaceInput& input, const PointSetResampling& g
   // A mesh of a few vertices (a tetrahedron, a quad) has too few to measure a spacing on, but its faces
   // say how large it is: h from the bound below alone.
   const bool few_vertices = input.is_mesh && positions.size() <= static_cast<std::size_t>(kSpacingNeighbours);
+  const double longest = input.is_mesh && by_rule ? longest_side(positions) : 0.0;
   SpacingChoice choice;
-  try {
-    choice = by_rule && few_vertices ? SpacingChoice{std::numeric_limits<double>::infinity(), ""}
-                                     : choose_spacing(positions, options);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
+  if (by_rule && few_vertices) {
+    if (!(longest > 0.0))
+      throw std::invalid_argument(input.path + ": cannot choose h: the mesh's " + std::to_string(positions.size()) +
+                                  " vertices all lie at one position");
+    std::ostringstream reason;
+    reason << "the mesh's longest side (" << longest << ") / " << kMinMeshCells << ": its " << positions.size()
+           << " vertices are too few to measure a spacing on";
+    choice = {longest / kMinMeshCells, reason.str()};
+  } else {
+    try {
+      choice = choose_spacing(positions, options);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(input.path + ": cannot choose h: " + e.what() + "; give --spacing or --grid");
+    }
   }
   if (input.is_mesh && by_rule) {
-    const double longest = longest_side(positions);
-    if (few_vertices) {
-      if (!(longest > 0.0))
-        throw std::invalid_argument(input.path + ": cannot choose h: the mesh's " + std::to_string(positions.size()) +
-                                    " vertices all lie at one position");
-      std::ostringstream reason;
-      reason << "the mesh's longest side (" << longest << ") / " << kMinMeshCells << ": its "
-             << positions.size() << " vertices are too few to measure a spacing on";
-      choice = {longest / kMinMeshCells, reason.str()};
-    } else if (choice.h > longest / kMinMeshCells) {
+    if (choice.h > longest / kMinMeshCells) {
       std::ostringstream reason;
       reason << "the mesh's longest side (" << longest << ") / " << kMinMeshCells << ", finer than h = " << choice.h
              << " from " << choice.reason;
