@@ -183,6 +183,44 @@ TEST_CASE("the rim line cuts a sheet curling past it, but not a sheet facing the
   CHECK_FALSE(rim.side(Vec<3>(3.0, 0.0, 0.0), Vec<3>::UnitZ()).has_value());
 }
 
+TEST_CASE("a crossing near the rim line stays where it gives back an old point, and a new one needs the full band") {
+  // One carried rim point at the origin of the plane z = 0, normal +z,
+  // outward +x, its support 3 h: G(x) = x.x near it.
+  const double h = 0.1;
+  CarriedRim<3> carried;
+  SurfaceRim<3>::Samples samples;
+  samples.ids = {0};
+  samples.positions = {Vec<3>::Zero()};
+  samples.outward = {Vec<3>::UnitX()};
+  samples.normals = {Vec<3>::UnitZ()};
+  samples.radii = {3.0 * h};
+  carried.rim = SurfaceRim<3>(std::move(samples), Vec<3>(-1.0, -1.0, -1.0));
+  const Vec<3> up = Vec<3>::UnitZ();
+  int asked = 0;
+  const auto inside = [&](double along, bool near_old_point) {
+    return inside_rim(carried, h, Vec<3>(along * h, 0.5 * h, 0.0), up, [&] {
+      ++asked;
+      return near_old_point;
+    });
+  };
+  // Well inside, or out of every rim point's reach: inside, and the old points are not asked about.
+  CHECK(inside(-0.7, false));
+  CHECK(inside(-2.0, false));
+  CHECK(inside_rim(carried, h, Vec<3>(1.0, 1.0, 0.0), up, [&] {
+    ++asked;
+    return false;
+  }));
+  CHECK(asked == 0);
+  // Within kRimBand h of the line: a new point is cut, one that gives back an old point stays.
+  for (const double along : {-0.4, 0.0, 0.4}) {
+    CHECK_FALSE(inside(along, false));
+    CHECK(inside(along, true));
+  }
+  // Farther past the line than kRimBand h: cut, old point or not.
+  CHECK_FALSE(inside(0.7, true));
+  CHECK_FALSE(inside(1.5, true));
+}
+
 TEST_CASE("an open cap's rim samples are its outermost ring; a closed sphere has none") {
   ThreadPool pool(2);
   const Grid<3> grid = Grid<3>::unit(64);

@@ -138,7 +138,7 @@ class Resampler {
   // Cuts crossings_ to those inside the domain that an open surface's
   // carried rim draws (core/resample/rim_carrying.hpp), judged at their
   // estimated positions.
-  void drop_beyond_rim(const CarriedRim<D>& rim, const Grid<D>& grid, ThreadPool& pool);
+  void drop_beyond_rim(const CarriedRim<D>& rim, const AmlsSurface<D>& surface, ThreadPool& pool);
   // Cuts crossings_ to those that may win HAVECLOSEPOINT if every estimated
   // position is within `uncertainty` (a fraction of h) of the crossing.
   void drop_certain_losers(double uncertainty, ThreadPool& pool);

@@ -134,12 +134,6 @@ CarriedRim<D> carry_rim(const AmlsSurface<D>& surface, ThreadPool& pool) {
 }
 
 template <int D>
-bool inside_rim(const CarriedRim<D>& carried, double h, const Vec<D>& x, const Vec<D>& normal) {
-  const std::optional<double> beyond = carried.rim.side(x, normal);
-  return !beyond || *beyond <= -kRimBand * h;
-}
-
-template <int D>
 void append_rim(CarriedRim<D>& carried, double h, PointSet<D>& out) {
   if (carried.points.empty()) return;
   const std::vector<Vec<D>>& rim = carried.points.positions;
@@ -163,8 +157,6 @@ void append_rim(CarriedRim<D>& carried, double h, PointSet<D>& out) {
 
 template CarriedRim<2> carry_rim<2>(const AmlsSurface<2>&, ThreadPool&);
 template CarriedRim<3> carry_rim<3>(const AmlsSurface<3>&, ThreadPool&);
-template bool inside_rim<2>(const CarriedRim<2>&, double, const Vec<2>&, const Vec<2>&);
-template bool inside_rim<3>(const CarriedRim<3>&, double, const Vec<3>&, const Vec<3>&);
 template void append_rim<2>(CarriedRim<2>&, double, PointSet<2>&);
 template void append_rim<3>(CarriedRim<3>&, double, PointSet<3>&);
 

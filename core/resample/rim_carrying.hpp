@@ -17,6 +17,16 @@
 // from the rim. The carried points, not all of the old rim samples, draw
 // the line, because they are the rim samples that the next resample finds:
 // so the next resample cuts its crossings where this one did.
+//
+// The cut has hysteresis: a crossing within kRimHold h of an old point (it
+// gives back a point the last resample made) stays unless it lies more than
+// kRimBand h past the line. A rim line redrawn from slightly different rim
+// points at each resample moves by a fraction of h, and without it the
+// crossings within that reach of the line came and went from one resample
+// to the next; a new point still needs the line's full band, so the rim
+// cannot advance by it.
+#include <optional>
+
 #include "core/geometry/point_set.hpp"
 #include "core/surface/amls_surface.hpp"
 #include "core/util/thread_pool.hpp"
@@ -26,6 +36,7 @@ namespace amls {
 inline constexpr double kRimBand = 0.5;
 inline constexpr double kRimGapToFill = 1.5;
 inline constexpr double kRimSpacing = 0.75;
+inline constexpr double kRimHold = 0.25;
 
 struct RimCarryStats {
   std::size_t carried = 0;   // rim samples kept
@@ -47,9 +58,16 @@ template <int D>
 CarriedRim<D> carry_rim(const AmlsSurface<D>& surface, ThreadPool& pool);
 
 // Whether a crossing at x, whose surface normal is about `normal`, lies in
-// the domain that `carried` draws on a grid of spacing h.
-template <int D>
-bool inside_rim(const CarriedRim<D>& carried, double h, const Vec<D>& x, const Vec<D>& normal);
+// the domain that `carried` draws on a grid of spacing h. `near_old_point()`
+// says whether an old point lies within kRimHold h of x; it is asked only
+// where x lies within kRimBand h of the rim line.
+template <int D, typename NearOldPoint>
+bool inside_rim(const CarriedRim<D>& carried, double h, const Vec<D>& x, const Vec<D>& normal,
+                NearOldPoint&& near_old_point) {
+  const std::optional<double> beyond = carried.rim.side(x, normal);
+  if (!beyond || *beyond <= -kRimBand * h) return true;
+  return *beyond <= kRimBand * h && near_old_point();
+}
 
 // Drops the points of `out` (new points of the grid walk) closer than
 // kRimBand h to a rim point, then appends the rim points, marked as rim
@@ -59,8 +77,6 @@ void append_rim(CarriedRim<D>& carried, double h, PointSet<D>& out);
 
 extern template CarriedRim<2> carry_rim<2>(const AmlsSurface<2>&, ThreadPool&);
 extern template CarriedRim<3> carry_rim<3>(const AmlsSurface<3>&, ThreadPool&);
-extern template bool inside_rim<2>(const CarriedRim<2>&, double, const Vec<2>&, const Vec<2>&);
-extern template bool inside_rim<3>(const CarriedRim<3>&, double, const Vec<3>&, const Vec<3>&);
 extern template void append_rim<2>(CarriedRim<2>&, double, PointSet<2>&);
 extern template void append_rim<3>(CarriedRim<3>&, double, PointSet<3>&);
 
