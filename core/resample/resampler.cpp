@@ -222,21 +222,13 @@ template <int D>
 void Resampler<D>::drop_beyond_rim(const CarriedRim<D>& rim, const AmlsSurface<D>& surface, ThreadPool& pool) {
   const Grid<D>& grid = surface.grid();
   const double h = grid.spacing();
-  const double hold = kRimHold * h;
-  const std::vector<Vec<D>>& old_points = surface.points().positions;
   std::vector<std::uint8_t> inside(crossings_.size());
   pool.parallel_for(crossings_.size(), [&](std::size_t begin, std::size_t end, int) {
-    std::vector<std::uint32_t> ids;
     for (std::size_t c = begin; c < end; ++c) {
       const Crossing& x = crossings_[c];
       Vec<D> q = grid.vertex_position(field_.vertex_of(x.from));
       q[x.axis] += x.t * h;
-      const auto near_old_point = [&] {
-        ids.clear();
-        surface.gather_ids(q, q, hold, ids);
-        return std::any_of(ids.begin(), ids.end(),
-                           [&](std::uint32_t i) { return (old_points[i] - q).squaredNorm() <= hold * hold; });
-      };
+      const auto near_old_point = [&] { return surface.has_point_within(q, kRimHold * h); };
       inside[c] = inside_rim(rim, h, q, Vec<D>(value_at(x.from).gradient + value_at(x.to).gradient), near_old_point);
     }
   });

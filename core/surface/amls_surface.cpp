@@ -288,6 +288,14 @@ Evaluation<D> AmlsSurface<D>::evaluate(const Vec<D>& x) const {
 }
 
 template <int D>
+bool AmlsSurface<D>::has_point_within(const Vec<D>& x, double radius) const {
+  require_ready();
+  bool found = false;
+  index_.for_each_within(x, radius, [&](std::uint32_t, const Vec<D>&) { found = true; });
+  return found;
+}
+
+template <int D>
 void AmlsSurface<D>::gather_ids(const Vec<D>& lo, const Vec<D>& hi, double radius,
                                 std::vector<std::uint32_t>& out) const {
   require_ready();

@@ -128,6 +128,9 @@ class AmlsSurface {
   // The bias correction's offset of every point, empty when it is off.
   const std::vector<double>& offsets() const { return offsets_; }
 
+  // Whether some point lies within `radius` of x.
+  bool has_point_within(const Vec<D>& x, double radius) const;
+
   // F, in three parts: gather_ids() lists the points near a region, select()
   // copies those near a position into a Neighbourhood, and evaluate_in() or
   // evaluate_cube() fits over it. The resampler gathers once per brick and
